@@ -1,0 +1,244 @@
+#pragma once
+// The colony loop (Algorithm 1 of the paper): construct the ants of an iteration in parallel,
+// improve them by local search, update the pheromone, observe, check termination. Every variant
+// is this one loop with different policies:
+//   Rule         construction rule (rules.hpp)
+//   Update       pheromone update (update_*.hpp)
+//   LocalSearch  optional improvement of each ant (local_search.hpp)
+//   Backend      how the ants of one iteration are spread over threads (backend*.hpp)
+// Determinism: ant a of iteration t draws only from ant_stream(seed, t, a), writes only its own
+// slot, and everything after construction (ranking, best, deposits) runs in ant order, so the
+// result is bit-identical for every backend and thread count.
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <numeric>
+#include <span>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include "aco/backend.hpp"
+#include "aco/layered_family.hpp"
+#include "aco/local_search.hpp"
+#include "aco/permutation_family.hpp"
+#include "aco/problem.hpp"
+#include "aco/random.hpp"
+#include "aco/solution.hpp"
+#include "aco/termination.hpp"
+#include "aco/update_context.hpp"
+
+namespace antslam::aco {
+
+template <class P>
+struct FamilyOf;
+template <class P>
+  requires LayeredProblem<P>
+struct FamilyOf<P> {
+  using type = LayeredFamily<P>;
+};
+template <class P>
+  requires PermutationProblem<P>
+struct FamilyOf<P> {
+  using type = PermutationFamily<P>;
+};
+
+struct ColonySettings {
+  std::size_t ants = 20;               ///< ants per iteration (A of Algorithm 2)
+  double alpha = 1.0;                  ///< pheromone exponent of eq. (1)
+  double beta = 2.0;                   ///< heuristic exponent of eq. (1); no effect without heuristic
+  std::uint64_t seed = 1;              ///< seed of every random stream of the run
+  std::size_t local_search_ants = 0;   ///< 0: local search improves every ant; k: the k best only
+};
+
+/// What the observer hears after every iteration.
+struct IterationReport {
+  std::uint64_t iteration = 0;  ///< 1-based
+  double elapsed_s = 0.0;       ///< wall-clock seconds since the run started
+  double iteration_best = 0.0;  ///< best cost of this iteration
+  double global_best = 0.0;     ///< best cost so far
+  bool improved = false;        ///< this iteration found a new global best
+};
+using Observer = std::function<void(const IterationReport&)>;
+
+struct RunResult {
+  Solution best;                     ///< best solution found
+  std::uint64_t iterations = 0;      ///< iterations run
+  std::uint64_t best_iteration = 0;  ///< iteration that found `best`
+  double elapsed_s = 0.0;            ///< wall-clock seconds of the run
+  double time_to_best_s = 0.0;       ///< wall-clock seconds until `best` was found
+  StopReason reason = StopReason::iterations;
+};
+
+template <class Problem, class Rule, class Update, class LocalSearch = NoLocalSearch,
+          class Exec = SerialBackend>
+  requires Backend<Exec>
+class Colony {
+ public:
+  using Family = typename FamilyOf<Problem>::type;
+  using Trail = typename Family::Trail;
+  static constexpr bool kHasLocalSearch = !std::is_same_v<LocalSearch, NoLocalSearch>;
+
+  Colony(const Problem& problem, const ColonySettings& settings, Rule rule = {}, Update update = {},
+         LocalSearch local_search = {}, Exec backend = {})
+      : problem_(&problem),
+        settings_(settings),
+        rule_(std::move(rule)),
+        update_(std::move(update)),
+        local_search_(std::move(local_search)),
+        backend_(std::move(backend)),
+        family_(problem, settings.alpha, settings.beta) {
+    if (settings_.ants == 0) throw std::invalid_argument("colony needs at least one ant");
+    const std::size_t ants = settings_.ants;
+    ants_.resize(ants);
+    rngs_.resize(ants);
+    ranking_.resize(ants);
+    family_.reserve_ants(ants);
+    if constexpr (kHasLocalSearch) {
+      workspaces_.reserve(ants);
+      for (std::size_t a = 0; a < ants; ++a) workspaces_.push_back(local_search_.make_workspace(problem));
+    }
+    reset();
+  }
+
+  /// Back to iteration 0: initial trails (Algorithm 2, lines 2-7), no best solution.
+  void reset() {
+    iteration_ = 0;
+    best_ = Solution{};
+    update_.initialize(family_.trail(), family_.init_context(settings_.ants, kHasLocalSearch));
+  }
+
+  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long local search end early.
+  IterationReport step(const StopToken& stop = {}) {
+    ++iteration_;
+    const std::size_t ants = settings_.ants;
+    for (std::size_t a = 0; a < ants; ++a) rngs_[a] = ant_stream(settings_.seed, iteration_, a);
+    family_.prepare(rule_);
+
+    const bool improve_all = kHasLocalSearch && (settings_.local_search_ants == 0 ||
+                                                 settings_.local_search_ants >= ants);
+    const auto finish = [&](std::size_t a) {
+      if (improve_all) improve(a, stop);
+      ants_[a].cost = static_cast<double>(problem_->cost(ants_[a].path));
+    };
+    if constexpr (HasLocalUpdate<Update>) {
+      family_.construct_synchronous(rule_, update_, backend_, std::span<Solution>(ants_),
+                                    std::span<Rng>(rngs_));
+      backend_.for_each(ants, finish);
+    } else {
+      backend_.for_each(ants, [&](std::size_t a) {
+        family_.construct(a, ants_[a].path, rngs_[a], rule_);
+        finish(a);
+      });
+    }
+    if (kHasLocalSearch && !improve_all) {
+      rank();
+      backend_.for_each(settings_.local_search_ants, [&](std::size_t r) {
+        const std::size_t a = ranking_[r];
+        improve(a, stop);
+        ants_[a].cost = static_cast<double>(problem_->cost(ants_[a].path));
+      });
+    }
+    rank();
+
+    const Solution& iteration_best = ants_[ranking_.front()];
+    IterationReport report;
+    report.iteration = iteration_;
+    report.iteration_best = iteration_best.cost;
+    report.improved = iteration_best.cost < best_.cost;
+    if (report.improved) best_ = iteration_best;
+    report.global_best = best_.cost;
+    update_.apply(family_.trail(),
+                  IterationView{ants_, ranking_, iteration_best, best_, iteration_});
+    return report;
+  }
+
+  /// Runs from fresh trails until a termination criterion holds.
+  RunResult run(const Termination& termination, const Observer& observer = {}) {
+    if (!termination.bounded())
+      throw std::invalid_argument("termination: set iterations, a time budget, a target or stagnation");
+    reset();
+    using Clock = StopToken::Clock;
+    const auto start = Clock::now();
+    const double cpu_start = StopToken::cpu_seconds();
+    const StopToken stop(
+        termination.time_limit_s > 0.0
+            ? start + std::chrono::duration_cast<Clock::duration>(
+                          std::chrono::duration<double>(termination.time_limit_s))
+            : Clock::time_point::max(),
+        termination.cpu_time_limit_s > 0.0 ? cpu_start + termination.cpu_time_limit_s
+                                           : std::numeric_limits<double>::infinity());
+    RunResult result;
+    for (;;) {
+      IterationReport report = step(stop);
+      report.elapsed_s = std::chrono::duration<double>(Clock::now() - start).count();
+      if (report.improved) {
+        result.time_to_best_s = report.elapsed_s;
+        result.best_iteration = iteration_;
+      }
+      if (observer) observer(report);
+      result.elapsed_s = report.elapsed_s;
+      if (best_.cost <= termination.target_cost) {
+        result.reason = StopReason::target;
+      } else if (termination.max_iterations > 0 && iteration_ >= termination.max_iterations) {
+        result.reason = StopReason::iterations;
+      } else if (termination.time_limit_s > 0.0 && report.elapsed_s >= termination.time_limit_s) {
+        result.reason = StopReason::time;
+      } else if (termination.cpu_time_limit_s > 0.0 &&
+                 StopToken::cpu_seconds() - cpu_start >= termination.cpu_time_limit_s) {
+        result.reason = StopReason::cpu_time;
+      } else if (termination.stagnation_iterations > 0 &&
+                 iteration_ - result.best_iteration >= termination.stagnation_iterations) {
+        result.reason = StopReason::stagnation;
+      } else {
+        continue;
+      }
+      break;
+    }
+    result.best = best_;
+    result.iterations = iteration_;
+    return result;
+  }
+
+  const Problem& problem() const { return *problem_; }
+  const Solution& best() const { return best_; }
+  std::span<const Solution> ants() const { return ants_; }
+  std::span<const std::uint32_t> ranking() const { return ranking_; }
+  const Trail& trail() const { return family_.trail(); }
+  const Update& update() const { return update_; }
+  std::uint64_t iteration() const { return iteration_; }
+  const ColonySettings& settings() const { return settings_; }
+
+ private:
+  void improve(std::size_t a, const StopToken& stop) {
+    if constexpr (kHasLocalSearch)
+      local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop);
+  }
+
+  /// Ant indices by increasing cost; ties keep ant order.
+  void rank() {
+    std::iota(ranking_.begin(), ranking_.end(), 0U);
+    std::stable_sort(ranking_.begin(), ranking_.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return ants_[a].cost < ants_[b].cost;
+    });
+  }
+
+  const Problem* problem_;
+  ColonySettings settings_;
+  Rule rule_;
+  Update update_;
+  LocalSearch local_search_;
+  Exec backend_;
+  Family family_;
+  std::vector<Solution> ants_;
+  std::vector<Rng> rngs_;
+  std::vector<std::uint32_t> ranking_;
+  std::vector<typename LocalSearch::Workspace> workspaces_;
+  Solution best_;
+  std::uint64_t iteration_ = 0;
+};
+
+}  // namespace antslam::aco

@@ -1,0 +1,208 @@
+#pragma once
+// Construction for symmetric permutation problems (TSP). An ant starts at a random node and
+// repeatedly picks, with the construction rule, among the unvisited nodes of its current node's
+// candidate list; when all candidates are visited it moves to the nearest unvisited node (as
+// ACOTSP's neighbour_choose_and_move_to_next, with distance as the fallback criterion). So a
+// tour costs O(n k) plus the rare fallbacks.
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <vector>
+
+#include "aco/edge_trail.hpp"
+#include "aco/problem.hpp"
+#include "aco/random.hpp"
+#include "aco/update_context.hpp"
+
+namespace antslam::aco {
+
+template <PermutationProblem P>
+class PermutationFamily {
+ public:
+  using Trail = EdgeTrail;
+
+  PermutationFamily(const P& problem, double alpha, double beta)
+      : problem_(&problem), n_(static_cast<std::uint32_t>(problem.size())), alpha_(alpha) {
+    if (n_ < 3) throw std::invalid_argument("permutation problem needs at least 3 nodes");
+    k_ = problem.candidates(0).size();
+    if (k_ == 0) throw std::invalid_argument("permutation problem has empty candidate lists");
+    std::vector<std::uint32_t> neighbours;
+    neighbours.reserve(std::size_t{n_} * k_);
+    for (std::uint32_t i = 0; i < n_; ++i) {
+      const std::span<const std::uint32_t> list = problem.candidates(i);
+      if (list.size() != k_)
+        throw std::invalid_argument("permutation problem: candidate lists differ in length");
+      neighbours.insert(neighbours.end(), list.begin(), list.end());
+    }
+    trail_ = EdgeTrail(n_, k_, std::move(neighbours));
+    eta_beta_.resize(std::size_t{n_} * k_);
+    for (std::uint32_t i = 0; i < n_; ++i) {
+      const auto list = trail_.neighbours(i);
+      for (std::size_t r = 0; r < k_; ++r)
+        eta_beta_[std::size_t{i} * k_ + r] = std::pow(heuristic(i, list[r]), beta);
+    }
+    weight_.assign(eta_beta_.size(), 0.0);
+  }
+
+  Trail& trail() { return trail_; }
+  const Trail& trail() const { return trail_; }
+  std::size_t path_length() const { return n_; }
+
+  void reserve_ants(std::size_t ants) {
+    scratch_.resize(ants);
+    for (Scratch& s : scratch_) {
+      s.visited.assign(n_, 0);
+      s.unvisited.resize(n_);
+      s.slot.resize(n_);
+      s.weight.resize(k_);
+      s.node.resize(k_);
+    }
+  }
+
+  InitContext init_context(std::size_t ants, bool local_search) const {
+    return {reference_cost(), ants, trail_.decision_count(), trail_.mean_options(), local_search};
+  }
+
+  /// C_nn: length of the nearest-neighbour tour from node 0.
+  double reference_cost() const {
+    Scratch s;
+    s.visited.assign(n_, 0);
+    s.unvisited.resize(n_);
+    s.slot.resize(n_);
+    std::vector<std::uint32_t> tour;
+    begin(s, tour, 0);
+    for (std::uint32_t step = 1; step < n_; ++step) {
+      std::uint32_t next = kNone;
+      for (std::uint32_t j : trail_.neighbours(tour.back()))
+        if (!s.visited[j]) {
+          next = j;
+          break;
+        }
+      visit(s, tour, next == kNone ? nearest_unvisited(s, tour.back()) : next);
+    }
+    return problem_->cost(tour);
+  }
+
+  /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix).
+  template <class Rule>
+  void prepare(const Rule&) {
+    const auto tau = trail_.values();
+    for (std::size_t e = 0; e < weight_.size(); ++e) refresh(e, tau[e]);
+  }
+
+  template <class Rule>
+  void construct(std::size_t ant, std::vector<std::uint32_t>& tour, Rng& rng, const Rule& rule) {
+    Scratch& s = scratch_[ant];
+    begin(s, tour, rng.below(n_));
+    for (std::uint32_t step = 1; step < n_; ++step) visit(s, tour, choose_next(s, tour.back(), rng, rule));
+  }
+
+  /// Ant Colony System: all ants move one step, then apply the local update in ant order
+  /// (Dorigo & Gambardella 1997 move ants synchronously), so results are thread-independent.
+  template <class Rule, class Update, class B>
+  void construct_synchronous(const Rule& rule, const Update& update, B& backend,
+                             std::span<Solution> ants, std::span<Rng> rngs) {
+    for (std::size_t a = 0; a < ants.size(); ++a) begin(scratch_[a], ants[a].path, rngs[a].below(n_));
+    const auto local = [&](std::uint32_t i, std::uint32_t j) {
+      const std::uint32_t e = trail_.update_edge(i, j, [&](double& tau) { update.local_update(tau); });
+      if (e != EdgeTrail::kNone) {
+        refresh(e, trail_.entry(e));
+        if (trail_.mirror(e) != EdgeTrail::kNone) refresh(trail_.mirror(e), trail_.entry(e));
+      }
+    };
+    for (std::uint32_t step = 1; step < n_; ++step) {
+      backend.for_each(ants.size(), [&](std::size_t a) {
+        auto& tour = ants[a].path;
+        visit(scratch_[a], tour, choose_next(scratch_[a], tour.back(), rngs[a], rule));
+      });
+      for (const Solution& ant : ants) local(ant.path[step - 1], ant.path[step]);
+    }
+    for (const Solution& ant : ants) local(ant.path.back(), ant.path.front());
+  }
+
+ private:
+  static constexpr std::uint32_t kNone = EdgeTrail::kNone;
+
+  struct Scratch {
+    std::vector<std::uint8_t> visited;
+    std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes
+    std::vector<std::uint32_t> slot;       // position of a node in `unvisited`
+    std::uint32_t remaining = 0;
+    std::vector<double> weight;            // weights of the feasible candidates
+    std::vector<std::uint32_t> node;       // the feasible candidates
+  };
+
+  double heuristic(std::uint32_t i, std::uint32_t j) const {
+    if constexpr (PermutationProblemWithHeuristic<P>) {
+      return problem_->heuristic(i, j);
+    } else {
+      return 1.0 / (static_cast<double>(problem_->distance(i, j)) + 0.1);
+    }
+  }
+
+  void refresh(std::size_t e, double tau) {
+    weight_[e] = (alpha_ == 1.0 ? tau : std::pow(tau, alpha_)) * eta_beta_[e];
+  }
+
+  void begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
+    std::fill(s.visited.begin(), s.visited.end(), 0);
+    for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
+    s.remaining = n_;
+    tour.clear();
+    tour.reserve(n_);
+    visit(s, tour, start);
+  }
+
+  static void visit(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t node) {
+    tour.push_back(node);
+    s.visited[node] = 1;
+    const std::uint32_t last = s.unvisited[--s.remaining];
+    s.unvisited[s.slot[node]] = last;
+    s.slot[last] = s.slot[node];
+  }
+
+  template <class Rule>
+  std::uint32_t choose_next(Scratch& s, std::uint32_t current, Rng& rng, const Rule& rule) const {
+    const std::uint32_t* list = trail_.neighbours(current).data();
+    const double* w = weight_.data() + std::size_t{current} * k_;
+    std::size_t feasible = 0;
+    for (std::size_t r = 0; r < k_; ++r) {
+      if (s.visited[list[r]]) continue;
+      s.weight[feasible] = w[r];
+      s.node[feasible] = list[r];
+      ++feasible;
+    }
+    if (feasible == 0) return nearest_unvisited(s, current);
+    return s.node[rule.choose(std::span<const double>(s.weight.data(), feasible), rng)];
+  }
+
+  /// Fallback when every candidate is visited: the nearest unvisited node (lowest id on ties).
+  std::uint32_t nearest_unvisited(const Scratch& s, std::uint32_t current) const {
+    std::uint32_t best = kNone;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (std::uint32_t r = 0; r < s.remaining; ++r) {
+      const std::uint32_t j = s.unvisited[r];
+      const auto d = static_cast<double>(problem_->distance(current, j));
+      if (d < best_d || (d == best_d && j < best)) {
+        best_d = d;
+        best = j;
+      }
+    }
+    return best;
+  }
+
+  const P* problem_;
+  std::uint32_t n_;
+  std::size_t k_ = 0;
+  double alpha_;
+  EdgeTrail trail_;
+  std::vector<double> eta_beta_;
+  std::vector<double> weight_;
+  std::vector<Scratch> scratch_;
+};
+
+}  // namespace antslam::aco

@@ -1,0 +1,65 @@
+#pragma once
+// When a run stops, and the token that lets long phases (local search) stop inside an
+// iteration when a budget runs out.
+
+#include <chrono>
+#include <cstdint>
+#include <ctime>
+#include <limits>
+#include <string_view>
+
+namespace antslam::aco {
+
+/// Stop criteria; any that is set can end the run. At least one must be set.
+struct Termination {
+  std::uint64_t max_iterations = 0;  ///< iterations to run; 0 = no limit
+  double time_limit_s = 0.0;         ///< wall-clock budget in seconds; 0 = none
+  double cpu_time_limit_s = 0.0;     ///< process CPU-time budget in seconds (all threads); 0 = none
+  double target_cost = -std::numeric_limits<double>::infinity();  ///< stop once best <= target
+  std::uint64_t stagnation_iterations = 0;  ///< stop after this many iterations without a new
+                                            ///< global best; 0 = never
+
+  bool bounded() const {
+    return max_iterations > 0 || time_limit_s > 0.0 || cpu_time_limit_s > 0.0 ||
+           target_cost > -std::numeric_limits<double>::infinity() || stagnation_iterations > 0;
+  }
+};
+
+enum class StopReason { iterations, time, cpu_time, target, stagnation };
+
+constexpr std::string_view to_string(StopReason r) {
+  switch (r) {
+    case StopReason::iterations: return "iterations";
+    case StopReason::time: return "time";
+    case StopReason::cpu_time: return "cpu-time";
+    case StopReason::target: return "target";
+    case StopReason::stagnation: return "stagnation";
+  }
+  return "?";
+}
+
+/// Cheap to copy; polled by long-running phases. Default-constructed: never expires.
+class StopToken {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  StopToken() = default;
+  StopToken(Clock::time_point wall_deadline, double cpu_deadline_s)
+      : wall_deadline_(wall_deadline), cpu_deadline_s_(cpu_deadline_s) {}
+
+  bool expired() const {
+    if (wall_deadline_ != Clock::time_point::max() && Clock::now() >= wall_deadline_) return true;
+    return cpu_deadline_s_ < std::numeric_limits<double>::infinity() && cpu_seconds() >= cpu_deadline_s_;
+  }
+
+  /// CPU time used by the whole process so far, in seconds.
+  static double cpu_seconds() {
+    return static_cast<double>(std::clock()) / static_cast<double>(CLOCKS_PER_SEC);
+  }
+
+ private:
+  Clock::time_point wall_deadline_ = Clock::time_point::max();
+  double cpu_deadline_s_ = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace antslam::aco

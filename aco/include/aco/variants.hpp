@@ -1,0 +1,156 @@
+#pragma once
+// The named ACO variants as policy combinations, their documented defaults, and solve(): the
+// plain entry point that picks the variant at run time.
+//
+//   variant  rule                          update          default ants   default rho
+//   as       RandomProportional            AntSystemUpdate n (TSP) / 20   0.5
+//   eas      RandomProportional            ElitistUpdate   n (TSP) / 20   0.5
+//   ras      RandomProportional            RankUpdate      n (TSP) / 20   0.1
+//   acs      PseudoRandomProportional(q0)  AcsUpdate       10             0.1
+//   mmas     RandomProportional            MaxMinUpdate    n (TSP) / 20   0.02
+//   hybrid   UniformExploration(p0)        HybridUpdate    20             0.05
+// With local search, every variant except hybrid and acs defaults to 25 ants, and MMAS to
+// rho = 0.2 (Dorigo & Stuetzle 2004, Table 3.3 and Sec. 3.7.2; ACOTSP).
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string_view>
+#include <type_traits>
+
+#include "aco/colony.hpp"
+#include "aco/rules.hpp"
+#include "aco/update_acs.hpp"
+#include "aco/update_ant_system.hpp"
+#include "aco/update_hybrid.hpp"
+#include "aco/update_mmas.hpp"
+
+namespace antslam::aco {
+
+enum class Variant { ant_system, elitist, rank_based, acs, mmas, hybrid };
+
+constexpr std::string_view to_string(Variant v) {
+  switch (v) {
+    case Variant::ant_system: return "as";
+    case Variant::elitist: return "eas";
+    case Variant::rank_based: return "ras";
+    case Variant::acs: return "acs";
+    case Variant::mmas: return "mmas";
+    case Variant::hybrid: return "hybrid";
+  }
+  return "?";
+}
+
+/// GoogleTest and logs print the name.
+inline void PrintTo(Variant v, std::ostream* os) { *os << to_string(v); }
+
+constexpr std::optional<Variant> parse_variant(std::string_view name) {
+  for (Variant v : {Variant::ant_system, Variant::elitist, Variant::rank_based, Variant::acs,
+                    Variant::mmas, Variant::hybrid})
+    if (to_string(v) == name) return v;
+  return std::nullopt;
+}
+
+/// Every knob of every variant. Zero means "the variant's default" where noted.
+struct Parameters {
+  Variant variant = Variant::mmas;   ///< which algorithm
+  std::size_t ants = 0;              ///< ants per iteration; 0 = default (table above)
+  double alpha = 1.0;                ///< pheromone exponent, eq. (1)
+  double beta = 2.0;                 ///< heuristic exponent, eq. (1) (ACOTSP's default)
+  double rho = 0.0;                  ///< evaporation rate of eq. (2); 0 = default (table above)
+  std::uint64_t seed = 1;            ///< seed of every random stream
+  std::size_t local_search_ants = 0; ///< 0: local search on every ant; k: on the k best
+  // Ant Colony System
+  double q0 = 0.9;                   ///< probability of the greedy choice
+  double xi = 0.1;                   ///< local evaporation rate
+  // Elitist and rank-based Ant System
+  double elite_weight = 0.0;         ///< EAS weight e of the best-so-far deposit; 0 = n
+  std::size_t rank_width = 6;        ///< RAS w: the w-1 best ants and the best-so-far deposit
+  // MAX-MIN Ant System
+  double p_best = 0.05;              ///< sets tau_min (Stuetzle & Hoos 2000)
+  bool restarts = true;              ///< re-initialise trails on stagnation
+  // AntSLAM hybrid (paper Sec. IV values)
+  double p0 = 0.3;                   ///< probability of a uniform choice
+  std::uint64_t glob_best_freq = 5;  ///< every this-th iteration only global- and iteration-best deposit
+  double tau_max = 10000.0;          ///< pheromone cap
+  double tau_init = 100.0;           ///< initial pheromone
+  double hybrid_deposit = 1.0;       ///< numerator Q of the deposit Q/W (eq. 12: 1)
+};
+
+/// Default number of ants; `decisions` is the number of cities (or layers).
+constexpr std::size_t default_ants(Variant v, std::size_t decisions, bool permutation,
+                                   bool local_search) {
+  if (v == Variant::hybrid) return 20;
+  if (v == Variant::acs) return 10;
+  if (local_search) return 25;
+  return permutation ? decisions : 20;
+}
+
+constexpr double default_rho(Variant v, bool local_search) {
+  switch (v) {
+    case Variant::ant_system:
+    case Variant::elitist: return 0.5;
+    case Variant::rank_based:
+    case Variant::acs: return 0.1;
+    case Variant::mmas: return local_search ? 0.2 : 0.02;
+    case Variant::hybrid: return HybridUpdate{}.rho;
+  }
+  return 0.1;
+}
+
+/// Calls f(rule, update) with the policies of p.variant, configured from p; `rho` is the
+/// resolved evaporation rate. The single place where a variant name becomes types.
+template <class F>
+decltype(auto) with_variant_policies(const Parameters& p, double rho, F&& f) {
+  switch (p.variant) {
+    case Variant::ant_system: return f(RandomProportional{}, AntSystemUpdate{rho});
+    case Variant::elitist: return f(RandomProportional{}, ElitistUpdate{rho, p.elite_weight});
+    case Variant::rank_based: return f(RandomProportional{}, RankUpdate{rho, p.rank_width});
+    case Variant::acs: return f(PseudoRandomProportional{p.q0}, AcsUpdate{rho, p.xi});
+    case Variant::mmas: {
+      return f(RandomProportional{},
+               MaxMinUpdate({.rho = rho, .p_best = p.p_best, .reinitialize = p.restarts}));
+    }
+    case Variant::hybrid:
+      return f(UniformExploration{p.p0},
+               HybridUpdate{rho, p.glob_best_freq, p.tau_max, p.tau_init, p.hybrid_deposit});
+  }
+  throw std::invalid_argument("unknown ACO variant");
+}
+
+/// Colony settings of p for a problem with `decisions` decisions.
+inline ColonySettings colony_settings(const Parameters& p, std::size_t decisions, bool permutation,
+                                      bool local_search) {
+  ColonySettings settings;
+  settings.ants = p.ants > 0 ? p.ants : default_ants(p.variant, decisions, permutation, local_search);
+  settings.alpha = p.alpha;
+  settings.beta = p.beta;
+  settings.seed = p.seed;
+  settings.local_search_ants = p.local_search_ants;
+  return settings;
+}
+
+/// Runs the chosen variant on `problem` with any backend and local search.
+template <class Problem, class LocalSearch = NoLocalSearch, class Exec = AnyBackend>
+RunResult solve(const Problem& problem, const Parameters& p, const Termination& termination,
+                Exec backend = {}, LocalSearch local_search = {}, const Observer& observer = {}) {
+  constexpr bool kLs = !std::is_same_v<LocalSearch, NoLocalSearch>;
+  constexpr bool kPermutation = PermutationProblem<Problem>;
+  std::size_t decisions = 0;
+  if constexpr (kPermutation) {
+    decisions = problem.size();
+  } else {
+    decisions = problem.layer_count();
+  }
+  const ColonySettings settings = colony_settings(p, decisions, kPermutation, kLs);
+  const double rho = p.rho > 0.0 ? p.rho : default_rho(p.variant, kLs);
+  return with_variant_policies(p, rho, [&](auto rule, auto update) {
+    Colony<Problem, decltype(rule), decltype(update), LocalSearch, Exec> colony(
+        problem, settings, rule, update, local_search, backend);
+    return colony.run(termination, observer);
+  });
+}
+
+}  // namespace antslam::aco

@@ -1,0 +1,10 @@
+#pragma once
+// Every subcommand of the antslam program registers itself on the root CLI::App.
+
+#include <CLI/CLI.hpp>
+
+namespace antslam::cli {
+
+// void add_<name>_command(CLI::App& app);  -- one per subcommand, defined in <name>_command.cpp
+
+}  // namespace antslam::cli

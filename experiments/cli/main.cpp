@@ -1,0 +1,23 @@
+// antslam: the command-line entry point. Errors end the program with one line on stderr and a
+// non-zero exit status.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
+  app.require_subcommand(1);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "antslam: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
