@@ -60,7 +60,8 @@ double path_weight(const FragmentSet& set, std::span<const std::uint32_t> choice
     const Fragment& f = set.fragments[i];
     weight += 1.0 - f.alignment->value(f.samples[choice[i - 1]]);
   }
-  for (const LoopClosure& c : set.closures) weight += 1.0 - c.hypothesis.value(closure_pose(c, frames));
+  for (const LoopClosure& c : set.closures)
+    weight += 1.0 - c.hypothesis.value(closure_pose(c, frames));
   return weight;
 }
 

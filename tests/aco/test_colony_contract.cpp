@@ -107,20 +107,20 @@ TEST_P(ColonyContract, PermutationProblemDeterministicAndValid) {
   EXPECT_EQ(outcome.trail, reference.trail);
 }
 
-const std::vector<BackendSpec> kBackends{
-    {"serial", 1}, {"omp", 1}, {"omp", 2}, {"omp", 3}, {"omp", 4}, {"omp", 8},
-    {"tbb", 1},    {"tbb", 2}, {"tbb", 3}, {"tbb", 4}, {"tbb", 8}};
+const std::vector<BackendSpec> kBackends{{"serial", 1}, {"omp", 1}, {"omp", 2}, {"omp", 3},
+                                         {"omp", 4},    {"omp", 8}, {"tbb", 1}, {"tbb", 2},
+                                         {"tbb", 3},    {"tbb", 4}, {"tbb", 8}};
 
-INSTANTIATE_TEST_SUITE_P(
-    AllVariantsAllBackends, ColonyContract,
-    ::testing::Combine(::testing::Values(Variant::ant_system, Variant::elitist, Variant::rank_based,
-                                         Variant::acs, Variant::mmas, Variant::hybrid),
-                       ::testing::ValuesIn(kBackends)),
-    [](const auto& param_info) {
-      const auto& spec = std::get<1>(param_info.param);
-      return std::string(to_string(std::get<0>(param_info.param))) + "_" + spec.kind +
-             std::to_string(spec.threads);
-    });
+INSTANTIATE_TEST_SUITE_P(AllVariantsAllBackends, ColonyContract,
+                         ::testing::Combine(::testing::Values(Variant::ant_system, Variant::elitist,
+                                                              Variant::rank_based, Variant::acs,
+                                                              Variant::mmas, Variant::hybrid),
+                                            ::testing::ValuesIn(kBackends)),
+                         [](const auto& param_info) {
+                           const auto& spec = std::get<1>(param_info.param);
+                           return std::string(to_string(std::get<0>(param_info.param))) + "_" +
+                                  spec.kind + std::to_string(spec.threads);
+                         });
 
 }  // namespace
 }  // namespace antslam::aco

@@ -51,9 +51,9 @@ TEST(Hybrid, DepositsFollowAlgorithm2) {
 
 TEST(Hybrid, PheromoneNeverExceedsTauMax) {
   const SyntheticLayeredProblem problem(6, 5, 3);
-  HybridColony colony(problem, {.ants = 20, .seed = 4}, UniformExploration{0.3},
-                      HybridUpdate{.rho = 0.01, .tau_max = 120.0, .tau_init = 100.0,
-                                   .deposit = 50.0});
+  HybridColony colony(
+      problem, {.ants = 20, .seed = 4}, UniformExploration{0.3},
+      HybridUpdate{.rho = 0.01, .tau_max = 120.0, .tau_init = 100.0, .deposit = 50.0});
   bool reached_cap = false;
   for (int it = 0; it < 200; ++it) {
     colony.step();
@@ -100,7 +100,8 @@ TEST(Hybrid, FindsExhaustiveOptimumOnSmallInstances) {
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const SyntheticLayeredProblem problem(5, 6, seed);
     const Solution optimum = testing::exhaustive_optimum(problem);
-    HybridColony colony(problem, {.ants = 20, .seed = seed}, UniformExploration{0.3}, HybridUpdate{});
+    HybridColony colony(problem, {.ants = 20, .seed = seed}, UniformExploration{0.3},
+                        HybridUpdate{});
     const RunResult result = colony.run({.max_iterations = 500});
     EXPECT_GE(result.best.cost, optimum.cost);
     found += result.best.cost == optimum.cost ? 1 : 0;

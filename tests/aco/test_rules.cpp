@@ -29,7 +29,8 @@ void expect_choose_matches_distribution(const Rule& rule) {
   std::vector<double> count(kWeights.size(), 0.0);
   const int n = 200000;
   for (int i = 0; i < n; ++i) count[rule.choose(std::span<const double>(kWeights), rng)] += 1.0;
-  for (std::size_t j = 0; j < p.size(); ++j) EXPECT_NEAR(count[j] / n, p[j], 0.005) << "option " << j;
+  for (std::size_t j = 0; j < p.size(); ++j)
+    EXPECT_NEAR(count[j] / n, p[j], 0.005) << "option " << j;
 }
 
 TEST(Rules, RandomProportionalIsEq1) {
@@ -60,7 +61,8 @@ TEST(Rules, AllZeroWeightsFallBackToUniform) {
   RandomProportional{}.distribution(zero, p);
   for (double x : p) EXPECT_DOUBLE_EQ(x, 0.25);
   Rng rng(1);
-  for (int i = 0; i < 100; ++i) EXPECT_LT(RandomProportional{}.choose(std::span<const double>(zero), rng), 4U);
+  for (int i = 0; i < 100; ++i)
+    EXPECT_LT(RandomProportional{}.choose(std::span<const double>(zero), rng), 4U);
 }
 
 }  // namespace

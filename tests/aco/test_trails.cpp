@@ -42,9 +42,7 @@ TEST(LayeredTrail, RejectsEmptyLayer) {
 
 // Square 0-1-2-3 with candidate lists of 2 (its two neighbours on the square), plus the
 // diagonal 0-2 in 0's list only.
-EdgeTrail square_trail() {
-  return EdgeTrail(4, 2, {1, 2, /*1:*/ 0, 2, /*2:*/ 1, 3, /*3:*/ 2, 0});
-}
+EdgeTrail square_trail() { return EdgeTrail(4, 2, {1, 2, /*1:*/ 0, 2, /*2:*/ 1, 3, /*3:*/ 2, 0}); }
 
 TEST(EdgeTrail, SymmetricCopiesStayEqual) {
   EdgeTrail trail = square_trail();

@@ -41,7 +41,9 @@ INSTANTIATE_TEST_SUITE_P(All, EveryVariant,
                          ::testing::Values(Variant::ant_system, Variant::elitist,
                                            Variant::rank_based, Variant::acs, Variant::mmas,
                                            Variant::hybrid),
-                         [](const auto& param_info) { return std::string(to_string(param_info.param)); });
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
 
 // Without a heuristic, Ant System and ACS stagnate early on layered problems (AS: rho = 0.5;
 // ACS: q0 = 0.9 greedy), which is why the paper moved to its hybrid; MAX-MIN and the hybrid must
@@ -60,7 +62,9 @@ TEST_P(LayeredVariant, FindsTheOptimumOfASmallLayeredProblem) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Robust, LayeredVariant, ::testing::Values(Variant::mmas, Variant::hybrid),
-                         [](const auto& param_info) { return std::string(to_string(param_info.param)); });
+                         [](const auto& param_info) {
+                           return std::string(to_string(param_info.param));
+                         });
 
 TEST(Variants, NamesRoundTrip) {
   for (Variant v : {Variant::ant_system, Variant::elitist, Variant::rank_based, Variant::acs,
@@ -94,7 +98,8 @@ TEST(Mmas, ReinitialisesTrailsOnStagnation) {
 TEST(Acs, LocalUpdateErodesUsedEdgesTowardsTau0) {
   const testing::EuclideanTsp tsp(20, 6, 4);
   Colony<testing::EuclideanTsp, PseudoRandomProportional, AcsUpdate> colony(
-      tsp, {.ants = 10, .seed = 1}, PseudoRandomProportional{0.9}, AcsUpdate{.rho = 0.1, .xi = 0.1});
+      tsp, {.ants = 10, .seed = 1}, PseudoRandomProportional{0.9},
+      AcsUpdate{.rho = 0.1, .xi = 0.1});
   const double tau0 = colony.update().tau0;
   colony.step();
   // The best-so-far edges got the global deposit; every other value stays between tau0 and it.

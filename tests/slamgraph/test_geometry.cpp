@@ -96,7 +96,8 @@ TEST(Gaussian2, RejectsBadCovariances) {
   Eigen::Matrix3d nan = Eigen::Matrix3d::Identity();
   nan(1, 1) = std::nan("");
   EXPECT_THROW(Gaussian2(Pose2{}, nan), std::invalid_argument);
-  EXPECT_THROW(Gaussian2(Pose2{0, std::nan(""), 0}, Eigen::Matrix3d::Identity()), std::invalid_argument);
+  EXPECT_THROW(Gaussian2(Pose2{0, std::nan(""), 0}, Eigen::Matrix3d::Identity()),
+               std::invalid_argument);
 }
 
 // Three fragments, one sample each, hand-computed chain and weight.

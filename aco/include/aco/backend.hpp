@@ -36,8 +36,8 @@ class AnyBackend {
   AnyBackend() : AnyBackend(SerialBackend{}) {}
 
   template <Backend B>
-    requires(!std::same_as<std::remove_cvref_t<B>, AnyBackend>)
-  AnyBackend(B backend)  // NOLINT(google-explicit-constructor): implicit by design
+  requires(!std::same_as<std::remove_cvref_t<B>, AnyBackend>)
+      AnyBackend(B backend)  // NOLINT(google-explicit-constructor): implicit by design
       : self_(std::make_shared<Model<B>>(std::move(backend))) {}
 
   std::size_t threads() const { return self_->threads(); }

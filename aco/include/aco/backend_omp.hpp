@@ -22,7 +22,7 @@ class OmpBackend {
     std::exception_ptr error;
     std::mutex error_mutex;
     const auto n = static_cast<long long>(count);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(static_cast<int>(threads_))
+#pragma omp parallel for schedule(dynamic, 1) num_threads(static_cast <int>(threads_))
     for (long long i = 0; i < n; ++i) {
       try {
         f(static_cast<std::size_t>(i));

@@ -36,22 +36,22 @@ namespace antslam::aco {
 template <class P>
 struct FamilyOf;
 template <class P>
-  requires LayeredProblem<P>
+requires LayeredProblem<P>
 struct FamilyOf<P> {
   using type = LayeredFamily<P>;
 };
 template <class P>
-  requires PermutationProblem<P>
+requires PermutationProblem<P>
 struct FamilyOf<P> {
   using type = PermutationFamily<P>;
 };
 
 struct ColonySettings {
-  std::size_t ants = 20;               ///< ants per iteration (A of Algorithm 2)
-  double alpha = 1.0;                  ///< pheromone exponent of eq. (1)
-  double beta = 2.0;                   ///< heuristic exponent of eq. (1); no effect without heuristic
-  std::uint64_t seed = 1;              ///< seed of every random stream of the run
-  std::size_t local_search_ants = 0;   ///< 0: local search improves every ant; k: the k best only
+  std::size_t ants = 20;   ///< ants per iteration (A of Algorithm 2)
+  double alpha = 1.0;      ///< pheromone exponent of eq. (1)
+  double beta = 2.0;       ///< heuristic exponent of eq. (1); no effect without heuristic
+  std::uint64_t seed = 1;  ///< seed of every random stream of the run
+  std::size_t local_search_ants = 0;  ///< 0: local search improves every ant; k: the k best only
 };
 
 /// What the observer hears after every iteration.
@@ -75,7 +75,7 @@ struct RunResult {
 
 template <class Problem, class Rule, class Update, class LocalSearch = NoLocalSearch,
           class Exec = SerialBackend>
-  requires Backend<Exec>
+requires Backend<Exec>
 class Colony {
  public:
   using Family = typename FamilyOf<Problem>::type;
@@ -99,7 +99,8 @@ class Colony {
     family_.reserve_ants(ants);
     if constexpr (kHasLocalSearch) {
       workspaces_.reserve(ants);
-      for (std::size_t a = 0; a < ants; ++a) workspaces_.push_back(local_search_.make_workspace(problem));
+      for (std::size_t a = 0; a < ants; ++a)
+        workspaces_.push_back(local_search_.make_workspace(problem));
     }
     reset();
   }
@@ -159,18 +160,19 @@ class Colony {
   /// Runs from fresh trails until a termination criterion holds.
   RunResult run(const Termination& termination, const Observer& observer = {}) {
     if (!termination.bounded())
-      throw std::invalid_argument("termination: set iterations, a time budget, a target or stagnation");
+      throw std::invalid_argument(
+          "termination: set iterations, a time budget, a target or stagnation");
     reset();
     using Clock = StopToken::Clock;
     const auto start = Clock::now();
     const double cpu_start = StopToken::cpu_seconds();
-    const StopToken stop(
-        termination.time_limit_s > 0.0
-            ? start + std::chrono::duration_cast<Clock::duration>(
-                          std::chrono::duration<double>(termination.time_limit_s))
-            : Clock::time_point::max(),
-        termination.cpu_time_limit_s > 0.0 ? cpu_start + termination.cpu_time_limit_s
-                                           : std::numeric_limits<double>::infinity());
+    const StopToken stop(termination.time_limit_s > 0.0
+                             ? start + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(termination.time_limit_s))
+                             : Clock::time_point::max(),
+                         termination.cpu_time_limit_s > 0.0
+                             ? cpu_start + termination.cpu_time_limit_s
+                             : std::numeric_limits<double>::infinity());
     RunResult result;
     for (;;) {
       IterationReport report = step(stop);

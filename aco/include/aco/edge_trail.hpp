@@ -39,7 +39,9 @@ class EdgeTrail {
   std::span<const std::uint32_t> neighbours(std::uint32_t i) const {
     return {neighbour_.data() + std::size_t{i} * k_, k_};
   }
-  std::span<const double> row(std::uint32_t i) const { return {tau_.data() + std::size_t{i} * k_, k_}; }
+  std::span<const double> row(std::uint32_t i) const {
+    return {tau_.data() + std::size_t{i} * k_, k_};
+  }
   std::span<const double> values() const { return tau_; }
   double entry(std::size_t index) const { return tau_[index]; }
 

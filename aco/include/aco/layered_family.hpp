@@ -103,7 +103,8 @@ class LayeredFamily {
   template <class Rule, class Update, class B>
   void construct_synchronous(const Rule& rule, const Update& update, B& backend,
                              std::span<Solution> ants, std::span<Rng> rngs) {
-    backend.for_each(ants.size(), [&](std::size_t a) { construct(a, ants[a].path, rngs[a], rule); });
+    backend.for_each(ants.size(),
+                     [&](std::size_t a) { construct(a, ants[a].path, rngs[a], rule); });
     for (const Solution& ant : ants)
       trail_.update_path(ant.path, [&](double& tau) { update.local_update(tau); });
   }

@@ -15,7 +15,8 @@ namespace antslam::aco {
 
 template <class LS, class P>
 concept LocalSearchFor = requires(const LS& ls, const P& p, typename LS::Workspace& ws,
-                                  std::vector<std::uint32_t>& path, Rng& rng, const StopToken& stop) {
+                                  std::vector<std::uint32_t>& path, Rng& rng,
+                                  const StopToken& stop) {
   { ls.make_workspace(p) } -> std::same_as<typename LS::Workspace>;
   ls.improve(p, path, ws, rng, stop);
 };

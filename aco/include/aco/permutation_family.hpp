@@ -98,7 +98,8 @@ class PermutationFamily {
   void construct(std::size_t ant, std::vector<std::uint32_t>& tour, Rng& rng, const Rule& rule) {
     Scratch& s = scratch_[ant];
     begin(s, tour, rng.below(n_));
-    for (std::uint32_t step = 1; step < n_; ++step) visit(s, tour, choose_next(s, tour.back(), rng, rule));
+    for (std::uint32_t step = 1; step < n_; ++step)
+      visit(s, tour, choose_next(s, tour.back(), rng, rule));
   }
 
   /// Ant Colony System: all ants move one step, then apply the local update in ant order
@@ -106,9 +107,11 @@ class PermutationFamily {
   template <class Rule, class Update, class B>
   void construct_synchronous(const Rule& rule, const Update& update, B& backend,
                              std::span<Solution> ants, std::span<Rng> rngs) {
-    for (std::size_t a = 0; a < ants.size(); ++a) begin(scratch_[a], ants[a].path, rngs[a].below(n_));
+    for (std::size_t a = 0; a < ants.size(); ++a)
+      begin(scratch_[a], ants[a].path, rngs[a].below(n_));
     const auto local = [&](std::uint32_t i, std::uint32_t j) {
-      const std::uint32_t e = trail_.update_edge(i, j, [&](double& tau) { update.local_update(tau); });
+      const std::uint32_t e =
+          trail_.update_edge(i, j, [&](double& tau) { update.local_update(tau); });
       if (e != EdgeTrail::kNone) {
         refresh(e, trail_.entry(e));
         if (trail_.mirror(e) != EdgeTrail::kNone) refresh(trail_.mirror(e), trail_.entry(e));
@@ -132,8 +135,8 @@ class PermutationFamily {
     std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes
     std::vector<std::uint32_t> slot;       // position of a node in `unvisited`
     std::uint32_t remaining = 0;
-    std::vector<double> weight;            // weights of the feasible candidates
-    std::vector<std::uint32_t> node;       // the feasible candidates
+    std::vector<double> weight;       // weights of the feasible candidates
+    std::vector<std::uint32_t> node;  // the feasible candidates
   };
 
   double heuristic(std::uint32_t i, std::uint32_t j) const {

@@ -13,7 +13,8 @@ namespace antslam::aco {
 /// function of the whole choice. This is the shape of AntSLAM (paper Sec. III-B: one sample per
 /// fragment, weight of eq. 10).
 template <class P>
-concept LayeredProblem = requires(const P& p, std::size_t layer, std::span<const std::uint32_t> choice) {
+concept LayeredProblem = requires(const P& p, std::size_t layer,
+                                  std::span<const std::uint32_t> choice) {
   { p.layer_count() } -> std::convertible_to<std::size_t>;
   { p.option_count(layer) } -> std::convertible_to<std::size_t>;
   { p.cost(choice) } -> std::convertible_to<double>;
@@ -22,10 +23,10 @@ concept LayeredProblem = requires(const P& p, std::size_t layer, std::span<const
 /// Optional heuristic desirability eta >= 0 of an option (1 when the problem gives none, as in
 /// AntSLAM's eq. 11).
 template <class P>
-concept LayeredProblemWithHeuristic =
-    LayeredProblem<P> && requires(const P& p, std::size_t layer, std::size_t option) {
-      { p.heuristic(layer, option) } -> std::convertible_to<double>;
-    };
+concept LayeredProblemWithHeuristic = LayeredProblem<P> &&
+    requires(const P& p, std::size_t layer, std::size_t option) {
+  { p.heuristic(layer, option) } -> std::convertible_to<double>;
+};
 
 /// Symmetric permutation problem (TSP): the ant builds a closed tour over size() nodes.
 /// candidates(i) lists i's nearest neighbours, nearest first, all lists of equal length.
@@ -40,9 +41,9 @@ concept PermutationProblem = requires(const P& p, std::uint32_t i, std::uint32_t
 
 /// Optional heuristic; the default is eta_ij = 1 / (d_ij + 0.1) as in eq. (1) and ACOTSP.
 template <class P>
-concept PermutationProblemWithHeuristic =
-    PermutationProblem<P> && requires(const P& p, std::uint32_t i, std::uint32_t j) {
-      { p.heuristic(i, j) } -> std::convertible_to<double>;
-    };
+concept PermutationProblemWithHeuristic = PermutationProblem<P> &&
+    requires(const P& p, std::uint32_t i, std::uint32_t j) {
+  { p.heuristic(i, j) } -> std::convertible_to<double>;
+};
 
 }  // namespace antslam::aco

@@ -17,7 +17,8 @@ constexpr std::uint64_t splitmix64(std::uint64_t& state) noexcept {
 }
 
 /// Mixes up to three words into one well-spread 64-bit seed.
-constexpr std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b = 0, std::uint64_t c = 0) noexcept {
+constexpr std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b = 0,
+                                 std::uint64_t c = 0) noexcept {
   std::uint64_t s = a;
   std::uint64_t h = splitmix64(s);
   s = h ^ b;
@@ -51,9 +52,7 @@ class Rng {
   }
 
   /// Uniform double in [0, 1) with 53 random bits.
-  constexpr double uniform() noexcept {
-    return static_cast<double>((*this)() >> 11U) * 0x1.0p-53;
-  }
+  constexpr double uniform() noexcept { return static_cast<double>((*this)() >> 11U) * 0x1.0p-53; }
 
   /// Uniform integer in [0, n), n > 0, without bias (Lemire 2019).
   constexpr std::uint32_t below(std::uint32_t n) noexcept {

@@ -46,8 +46,7 @@ inline std::size_t argmax(std::span<const double> w) {
 inline void proportional(std::span<const double> w, std::span<double> p, double mass) {
   const double total = sum(w);
   const auto n = static_cast<double>(w.size());
-  for (std::size_t j = 0; j < w.size(); ++j)
-    p[j] = total > 0.0 ? mass * w[j] / total : mass / n;
+  for (std::size_t j = 0; j < w.size(); ++j) p[j] = total > 0.0 ? mass * w[j] / total : mass / n;
 }
 
 }  // namespace detail

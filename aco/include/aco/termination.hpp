@@ -29,11 +29,16 @@ enum class StopReason { iterations, time, cpu_time, target, stagnation };
 
 constexpr std::string_view to_string(StopReason r) {
   switch (r) {
-    case StopReason::iterations: return "iterations";
-    case StopReason::time: return "time";
-    case StopReason::cpu_time: return "cpu-time";
-    case StopReason::target: return "target";
-    case StopReason::stagnation: return "stagnation";
+    case StopReason::iterations:
+      return "iterations";
+    case StopReason::time:
+      return "time";
+    case StopReason::cpu_time:
+      return "cpu-time";
+    case StopReason::target:
+      return "target";
+    case StopReason::stagnation:
+      return "stagnation";
   }
   return "?";
 }
@@ -49,7 +54,8 @@ class StopToken {
 
   bool expired() const {
     if (wall_deadline_ != Clock::time_point::max() && Clock::now() >= wall_deadline_) return true;
-    return cpu_deadline_s_ < std::numeric_limits<double>::infinity() && cpu_seconds() >= cpu_deadline_s_;
+    return cpu_deadline_s_ < std::numeric_limits<double>::infinity() &&
+           cpu_seconds() >= cpu_deadline_s_;
   }
 
   /// CPU time used by the whole process so far, in seconds.

@@ -33,6 +33,8 @@ struct IterationView {
 inline double deposit_amount(double q, double cost) { return q / std::max(cost, 1e-12); }
 
 template <class U>
-concept HasLocalUpdate = requires(const U& u, double& tau) { u.local_update(tau); };
+concept HasLocalUpdate = requires(const U& u, double& tau) {
+  u.local_update(tau);
+};
 
 }  // namespace antslam::aco

@@ -53,8 +53,8 @@ class MaxMinUpdate {
     trail.evaporate(s_.rho);
     const Solution* depositor = &v.iteration_best;
     if (v.iteration % u_gb_ == 0)
-      depositor = (u_gb_ == 1 && v.iteration - restart_found_best_ > 50) ? &v.global_best
-                                                                         : &restart_best_;
+      depositor =
+          (u_gb_ == 1 && v.iteration - restart_found_best_ > 50) ? &v.global_best : &restart_best_;
     trail.deposit(depositor->path, deposit_amount(1.0, depositor->cost));
     trail.clamp(tau_min_, tau_max_);
 

@@ -33,12 +33,18 @@ enum class Variant { ant_system, elitist, rank_based, acs, mmas, hybrid };
 
 constexpr std::string_view to_string(Variant v) {
   switch (v) {
-    case Variant::ant_system: return "as";
-    case Variant::elitist: return "eas";
-    case Variant::rank_based: return "ras";
-    case Variant::acs: return "acs";
-    case Variant::mmas: return "mmas";
-    case Variant::hybrid: return "hybrid";
+    case Variant::ant_system:
+      return "as";
+    case Variant::elitist:
+      return "eas";
+    case Variant::rank_based:
+      return "ras";
+    case Variant::acs:
+      return "acs";
+    case Variant::mmas:
+      return "mmas";
+    case Variant::hybrid:
+      return "hybrid";
   }
   return "?";
 }
@@ -55,28 +61,29 @@ constexpr std::optional<Variant> parse_variant(std::string_view name) {
 
 /// Every knob of every variant. Zero means "the variant's default" where noted.
 struct Parameters {
-  Variant variant = Variant::mmas;   ///< which algorithm
-  std::size_t ants = 0;              ///< ants per iteration; 0 = default (table above)
-  double alpha = 1.0;                ///< pheromone exponent, eq. (1)
-  double beta = 2.0;                 ///< heuristic exponent, eq. (1) (ACOTSP's default)
-  double rho = 0.0;                  ///< evaporation rate of eq. (2); 0 = default (table above)
-  std::uint64_t seed = 1;            ///< seed of every random stream
-  std::size_t local_search_ants = 0; ///< 0: local search on every ant; k: on the k best
+  Variant variant = Variant::mmas;    ///< which algorithm
+  std::size_t ants = 0;               ///< ants per iteration; 0 = default (table above)
+  double alpha = 1.0;                 ///< pheromone exponent, eq. (1)
+  double beta = 2.0;                  ///< heuristic exponent, eq. (1) (ACOTSP's default)
+  double rho = 0.0;                   ///< evaporation rate of eq. (2); 0 = default (table above)
+  std::uint64_t seed = 1;             ///< seed of every random stream
+  std::size_t local_search_ants = 0;  ///< 0: local search on every ant; k: on the k best
   // Ant Colony System
-  double q0 = 0.9;                   ///< probability of the greedy choice
-  double xi = 0.1;                   ///< local evaporation rate
+  double q0 = 0.9;  ///< probability of the greedy choice
+  double xi = 0.1;  ///< local evaporation rate
   // Elitist and rank-based Ant System
-  double elite_weight = 0.0;         ///< EAS weight e of the best-so-far deposit; 0 = n
-  std::size_t rank_width = 6;        ///< RAS w: the w-1 best ants and the best-so-far deposit
+  double elite_weight = 0.0;   ///< EAS weight e of the best-so-far deposit; 0 = n
+  std::size_t rank_width = 6;  ///< RAS w: the w-1 best ants and the best-so-far deposit
   // MAX-MIN Ant System
-  double p_best = 0.05;              ///< sets tau_min (Stuetzle & Hoos 2000)
-  bool restarts = true;              ///< re-initialise trails on stagnation
+  double p_best = 0.05;  ///< sets tau_min (Stuetzle & Hoos 2000)
+  bool restarts = true;  ///< re-initialise trails on stagnation
   // AntSLAM hybrid (paper Sec. IV values)
-  double p0 = 0.3;                   ///< probability of a uniform choice
-  std::uint64_t glob_best_freq = 5;  ///< every this-th iteration only global- and iteration-best deposit
-  double tau_max = 10000.0;          ///< pheromone cap
-  double tau_init = 100.0;           ///< initial pheromone
-  double hybrid_deposit = 1.0;       ///< numerator Q of the deposit Q/W (eq. 12: 1)
+  double p0 = 0.3;  ///< probability of a uniform choice
+  std::uint64_t glob_best_freq =
+      5;                        ///< every this-th iteration only global- and iteration-best deposit
+  double tau_max = 10000.0;     ///< pheromone cap
+  double tau_init = 100.0;      ///< initial pheromone
+  double hybrid_deposit = 1.0;  ///< numerator Q of the deposit Q/W (eq. 12: 1)
 };
 
 /// Default number of ants; `decisions` is the number of cities (or layers).
@@ -91,11 +98,15 @@ constexpr std::size_t default_ants(Variant v, std::size_t decisions, bool permut
 constexpr double default_rho(Variant v, bool local_search) {
   switch (v) {
     case Variant::ant_system:
-    case Variant::elitist: return 0.5;
+    case Variant::elitist:
+      return 0.5;
     case Variant::rank_based:
-    case Variant::acs: return 0.1;
-    case Variant::mmas: return local_search ? 0.2 : 0.02;
-    case Variant::hybrid: return HybridUpdate{}.rho;
+    case Variant::acs:
+      return 0.1;
+    case Variant::mmas:
+      return local_search ? 0.2 : 0.02;
+    case Variant::hybrid:
+      return HybridUpdate{}.rho;
   }
   return 0.1;
 }
@@ -105,10 +116,14 @@ constexpr double default_rho(Variant v, bool local_search) {
 template <class F>
 decltype(auto) with_variant_policies(const Parameters& p, double rho, F&& f) {
   switch (p.variant) {
-    case Variant::ant_system: return f(RandomProportional{}, AntSystemUpdate{rho});
-    case Variant::elitist: return f(RandomProportional{}, ElitistUpdate{rho, p.elite_weight});
-    case Variant::rank_based: return f(RandomProportional{}, RankUpdate{rho, p.rank_width});
-    case Variant::acs: return f(PseudoRandomProportional{p.q0}, AcsUpdate{rho, p.xi});
+    case Variant::ant_system:
+      return f(RandomProportional{}, AntSystemUpdate{rho});
+    case Variant::elitist:
+      return f(RandomProportional{}, ElitistUpdate{rho, p.elite_weight});
+    case Variant::rank_based:
+      return f(RandomProportional{}, RankUpdate{rho, p.rank_width});
+    case Variant::acs:
+      return f(PseudoRandomProportional{p.q0}, AcsUpdate{rho, p.xi});
     case Variant::mmas: {
       return f(RandomProportional{},
                MaxMinUpdate({.rho = rho, .p_best = p.p_best, .reinitialize = p.restarts}));
@@ -124,7 +139,8 @@ decltype(auto) with_variant_policies(const Parameters& p, double rho, F&& f) {
 inline ColonySettings colony_settings(const Parameters& p, std::size_t decisions, bool permutation,
                                       bool local_search) {
   ColonySettings settings;
-  settings.ants = p.ants > 0 ? p.ants : default_ants(p.variant, decisions, permutation, local_search);
+  settings.ants =
+      p.ants > 0 ? p.ants : default_ants(p.variant, decisions, permutation, local_search);
   settings.alpha = p.alpha;
   settings.beta = p.beta;
   settings.seed = p.seed;

@@ -19,19 +19,15 @@
 
 #include "slamgraph/gaussian2.hpp"
 #include "slamgraph/pose2.hpp"
+#include "slamgraph/trajectory.hpp"
 
 namespace antslam::slam {
-
-struct StampedPose {
-  double stamp = 0.0;  ///< seconds
-  Pose2 pose;          ///< robot pose in the fragment's frame
-};
 
 struct Fragment {
   Pose2 exit;                          ///< E_i, in F_i
   std::optional<Gaussian2> alignment;  ///< N(mu_i, Sigma_i) over F_i in F_{i-1}; none for F_1
   std::vector<Pose2> samples;          ///< S_i (eq. 7): candidate poses of F_i in F_{i-1}
-  std::vector<StampedPose> trajectory; ///< optional robot poses while in this fragment, in F_i
+  Trajectory trajectory;               ///< optional robot poses while in this fragment, in F_i
 };
 
 struct LoopClosure {

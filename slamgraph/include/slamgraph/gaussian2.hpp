@@ -7,8 +7,8 @@
 // so each term 1 - value(E) lies in [0, 1] and a perfect fit costs 0. (The normalised density
 // would make the weight depend on the determinant of Sigma and could be negative.)
 
-#include <Eigen/Core>
 #include <Eigen/Cholesky>
+#include <Eigen/Core>
 
 #include "aco/random.hpp"
 #include "slamgraph/pose2.hpp"

@@ -1,0 +1,55 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "slamgraph/trajectory.hpp"
+
+namespace antslam::slam {
+namespace {
+
+TEST(Tum, RoundTrip) {
+  const Trajectory t{{1134864642.914187, Pose2{0.154, 0.068, 0.5623}},
+                     {1134864643.553180, Pose2{-3.5, 2.25, -2.9}}};
+  std::stringstream s;
+  write_tum(s, t);
+  const Trajectory back = read_tum(s, "mem");
+  ASSERT_EQ(back.size(), 2U);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(back[i].stamp, t[i].stamp, 1e-6);
+    EXPECT_NEAR(back[i].pose.x, t[i].pose.x, 1e-9);
+    EXPECT_NEAR(back[i].pose.y, t[i].pose.y, 1e-9);
+    EXPECT_NEAR(back[i].pose.theta, t[i].pose.theta, 1e-8);
+  }
+}
+
+TEST(Tum, ReadsTheReferenceFormat) {
+  std::istringstream s(
+      "# comment\n1134864642.914187 0.154000 0.068000 0 0 0 0.277666751 0.960677456\n");
+  const Trajectory t = read_tum(s, "ref");
+  ASSERT_EQ(t.size(), 1U);
+  EXPECT_NEAR(t[0].pose.theta, 2.0 * std::atan2(0.277666751, 0.960677456), 1e-8);
+}
+
+void expect_error(const std::string& text, const std::string& message) {
+  std::istringstream s(text);
+  try {
+    read_tum(s, "bad.tum");
+    FAIL() << "expected an error for: " << text;
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), message);
+  }
+}
+
+TEST(Tum, RejectsMalformedLinesWithFileAndLine) {
+  expect_error("1 2 3 4 5 6 7\n", "bad.tum:1: expected 8 numbers `timestamp x y z qx qy qz qw`");
+  expect_error("# c\n1 2 3 4 5 6 7 x\n",
+               "bad.tum:2: expected 8 numbers `timestamp x y z qx qy qz qw`");
+  expect_error("1 nan 0 0 0 0 0 1\n", "bad.tum:1: non-finite number");
+  expect_error("1 0 0 0 0 0 0 0\n", "bad.tum:1: zero quaternion");
+  expect_error("2 0 0 0 0 0 0 1\n1 0 0 0 0 0 0 1\n", "bad.tum:2: timestamp decreases");
+  expect_error("1 0 0 0 0 0 0 1 9\n", "bad.tum:1: unexpected extra field '9'");
+}
+
+}  // namespace
+}  // namespace antslam::slam
