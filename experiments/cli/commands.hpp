@@ -6,5 +6,8 @@
 namespace antslam::cli {
 
 // void add_<name>_command(CLI::App& app);  -- one per subcommand, defined in <name>_command.cpp
+void add_optimize_command(CLI::App& app);
+void add_synth_command(CLI::App& app);
+void add_g2o_command(CLI::App& app);
 
 }  // namespace antslam::cli

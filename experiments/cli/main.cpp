@@ -11,6 +11,9 @@
 int main(int argc, char** argv) {
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
   app.require_subcommand(1);
+  antslam::cli::add_optimize_command(app);
+  antslam::cli::add_synth_command(app);
+  antslam::cli::add_g2o_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,7 @@
 #include "slamgraph/fragment_set.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -14,6 +15,16 @@ bool finite(const Pose2& p) {
 
 [[noreturn]] void fail(const std::string& message) { throw std::invalid_argument(message); }
 
+void check_choice(const FragmentSet& set, std::span<const std::uint32_t> choice) {
+  if (choice.size() != set.layer_count())
+    fail("choice has " + std::to_string(choice.size()) + " entries, expected " +
+         std::to_string(set.layer_count()));
+  for (std::size_t l = 0; l < choice.size(); ++l)
+    if (choice[l] >= set.fragments[l + 1].samples.size())
+      fail("choice[" + std::to_string(l) + "] = " + std::to_string(choice[l]) +
+           " is not a sample of fragments[" + std::to_string(l + 1) + "]");
+}
+
 }  // namespace
 
 void validate(const FragmentSet& set) {
@@ -23,9 +34,14 @@ void validate(const FragmentSet& set) {
     const Fragment& f = set.fragments[i];
     const std::string where = "fragments[" + std::to_string(i) + "]";
     if (!finite(f.exit)) fail(where + ".exit is not finite");
+    for (std::size_t k = 0; k < f.trajectory.size(); ++k)
+      if (!finite(f.trajectory[k].pose) || !std::isfinite(f.trajectory[k].stamp))
+        fail(where + ".trajectory[" + std::to_string(k) + "] is not finite");
     if (i == 0) continue;
     if (!f.alignment) fail(where + ".alignment is missing");
     if (f.samples.empty()) fail(where + ".samples is empty");
+    if (f.samples.size() > std::numeric_limits<std::uint32_t>::max())
+      fail(where + ".samples has more than 2^32 - 1 entries");
     for (std::size_t j = 0; j < f.samples.size(); ++j)
       if (!finite(f.samples[j])) fail(where + ".samples[" + std::to_string(j) + "] is not finite");
   }
@@ -37,32 +53,82 @@ void validate(const FragmentSet& set) {
     if (lc.from >= lc.to) fail(where + ".from must be smaller than .to");
     if (!finite(lc.anchor)) fail(where + ".anchor is not finite");
   }
+  if (!set.reference.empty() && set.reference.size() != n)
+    fail("reference has " + std::to_string(set.reference.size()) + " poses, expected " +
+         std::to_string(n));
+  for (std::size_t i = 0; i < set.reference.size(); ++i)
+    if (!finite(set.reference[i])) fail("reference[" + std::to_string(i) + "] is not finite");
+}
+
+std::vector<Pose2> chosen_alignments(const FragmentSet& set,
+                                     std::span<const std::uint32_t> choice) {
+  check_choice(set, choice);
+  std::vector<Pose2> alignments(choice.size());
+  for (std::size_t l = 0; l < choice.size(); ++l)
+    alignments[l] = set.fragments[l + 1].samples[choice[l]];
+  return alignments;
+}
+
+std::vector<Pose2> mean_alignments(const FragmentSet& set) {
+  std::vector<Pose2> alignments(set.layer_count());
+  for (std::size_t l = 0; l < alignments.size(); ++l)
+    alignments[l] = set.fragments[l + 1].alignment.value().mean();
+  return alignments;
+}
+
+std::vector<Pose2> chain(std::span<const Pose2> alignments) {
+  std::vector<Pose2> frames(alignments.size() + 1);
+  for (std::size_t i = 1; i < frames.size(); ++i) frames[i] = frames[i - 1] * alignments[i - 1];
+  return frames;
+}
+
+std::vector<Pose2> relative_alignments(std::span<const Pose2> frames) {
+  std::vector<Pose2> alignments(frames.empty() ? 0 : frames.size() - 1);
+  for (std::size_t i = 0; i < alignments.size(); ++i)
+    alignments[i] = between(frames[i], frames[i + 1]);
+  return alignments;
 }
 
 std::vector<Pose2> world_frames(const FragmentSet& set, std::span<const std::uint32_t> choice) {
-  if (choice.size() + 1 != set.fragments.size())
-    throw std::invalid_argument("choice has " + std::to_string(choice.size()) +
-                                " entries, expected " + std::to_string(set.layer_count()));
-  std::vector<Pose2> frames(set.fragments.size());
-  for (std::size_t i = 1; i < frames.size(); ++i)
-    frames[i] = frames[i - 1] * set.fragments[i].samples.at(choice[i - 1]);
-  return frames;
+  return chain(chosen_alignments(set, choice));
 }
 
 Pose2 closure_pose(const LoopClosure& c, std::span<const Pose2> frames) {
   return between(frames[c.from], frames[c.to] * c.anchor);
 }
 
+Scores score(const FragmentSet& set, std::span<const Pose2> alignments) {
+  if (alignments.size() != set.layer_count())
+    fail("got " + std::to_string(alignments.size()) + " alignments, expected " +
+         std::to_string(set.layer_count()));
+  Scores s;
+  const auto add = [&s](const Gaussian2& g, const Pose2& p) {
+    const double m = g.mahalanobis_squared(p);
+    s.chi2 += m;
+    s.weight += 1.0 - std::exp(-0.5 * m);
+  };
+  for (std::size_t i = 1; i < set.fragments.size(); ++i)
+    add(*set.fragments[i].alignment, alignments[i - 1]);
+  const std::vector<Pose2> frames = chain(alignments);
+  for (const LoopClosure& c : set.closures) add(c.hypothesis, closure_pose(c, frames));
+  return s;
+}
+
 double path_weight(const FragmentSet& set, std::span<const std::uint32_t> choice) {
-  const std::vector<Pose2> frames = world_frames(set, choice);
-  double weight = 0.0;
-  for (std::size_t i = 1; i < set.fragments.size(); ++i) {
-    const Fragment& f = set.fragments[i];
-    weight += 1.0 - f.alignment->value(f.samples[choice[i - 1]]);
+  return score(set, chosen_alignments(set, choice)).weight;
+}
+
+Trajectory world_trajectory(const FragmentSet& set, std::span<const Pose2> frames) {
+  if (frames.size() != set.fragments.size())
+    fail("got " + std::to_string(frames.size()) + " frames, expected " +
+         std::to_string(set.fragments.size()));
+  Trajectory out;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Trajectory& local = set.fragments[i].trajectory;
+    if (local.empty()) out.push_back({static_cast<double>(i), frames[i]});
+    for (const StampedPose& p : local) out.push_back({p.stamp, frames[i] * p.pose});
   }
-  for (const LoopClosure& c : set.closures)
-    weight += 1.0 - c.hypothesis.value(closure_pose(c, frames));
-  return weight;
+  return out;
 }
 
 }  // namespace antslam::slam

@@ -92,9 +92,9 @@ class LayeredFamily {
       const double u = rng.uniform();
       const double* cdf = cdf_.data() + trail_.offset(l);
       const std::size_t m = trail_.option_count(l);
-      std::uint32_t below = 0;
+      std::uint64_t below = 0;
       for (std::size_t o = 0; o < m; ++o) below += cdf[o] <= u ? 1U : 0U;
-      path[l] = below;
+      path[l] = static_cast<std::uint32_t>(below);
     }
   }
 

@@ -1,0 +1,181 @@
+// antslam optimize: run one optimizer variant on a fragment set (or a g2o pose graph), many
+// trials in parallel; write the result JSON, a per-trial CSV and a convergence CSV.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/atomic_file.hpp"
+#include "cli/progress.hpp"
+#include "commands.hpp"
+#include "slamgraph/evaluation.hpp"
+#include "slamgraph/fragment_set_io.hpp"
+#include "slamgraph/g2o.hpp"
+#include "slamgraph/result_io.hpp"
+#include "slamgraph/trials.hpp"
+
+namespace antslam::cli {
+
+namespace {
+
+struct OptimizeOptions {
+  std::string input;
+  std::string method = "hybrid";
+  std::string nlopt_algorithm = "lbfgs";
+  std::string output;
+  std::string reference;
+  std::string g2o_out;
+  std::string tum_out;
+  std::size_t trials = 1;
+  std::size_t threads = 1;
+  slam::G2oImportSettings import;
+  slam::OptimizeSettings s;
+};
+
+slam::FragmentSet load(const OptimizeOptions& o) {
+  if (std::filesystem::path(o.input).extension() != ".g2o")
+    return slam::read_fragment_set_file(o.input);
+  return slam::fragment_set_from_g2o(slam::read_g2o_file(o.input), o.import, o.input);
+}
+
+std::vector<slam::Pose2> reference(const OptimizeOptions& o, const slam::FragmentSet& set) {
+  if (o.reference.empty()) return set.reference;
+  std::vector<slam::Pose2> poses = slam::read_reference_poses(o.reference);
+  if (poses.size() != set.fragments.size())
+    throw std::runtime_error(o.reference + ": has " + std::to_string(poses.size()) +
+                             " poses, the fragment set " + std::to_string(set.fragments.size()));
+  return poses;
+}
+
+std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
+                                            const OptimizeOptions& o) {
+  Progress progress;
+  if (o.trials > 1) {
+    return slam::run_trials(set, o.s, o.trials, o.threads, [&](std::size_t done) {
+      progress.update("trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
+                      done == o.trials);
+    });
+  }
+  slam::OptimizeSettings s = o.s;
+  s.seed = slam::trial_seed(o.s.seed, 0);  // trial 0 of the study, as with --trials > 1
+  s.threads = o.threads;
+  return {slam::optimize(set, s, [&](const slam::ConvergencePoint& p) {
+    char line[128];
+    std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
+                  static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
+    progress.update(line);
+  })};
+}
+
+void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
+                   const OptimizeOptions& o) {
+  std::printf("%s on %s (N = %zu, %zu closure%s): %zu trial%s on %zu thread%s\n",
+              std::string(slam::to_string(r.method)).c_str(), o.input.c_str(), set.fragments.size(),
+              set.closures.size(), set.closures.size() == 1 ? "" : "s", r.trials,
+              r.trials == 1 ? "" : "s", o.threads, o.threads == 1 ? "" : "s");
+  std::printf("  weight (eq. 10)  %.6f +- %.6f  (best %.6f, worst %.6f)\n", r.weight.mean,
+              r.weight.std, r.weight.min, r.weight.max);
+  std::printf("  chi2             %.6g +- %.6g  (best trial %.6g)\n", r.chi2.mean, r.chi2.std,
+              r.best.scores.chi2);
+  std::printf("  time per trial   %.3f ms +- %.3f ms\n", 1e3 * r.elapsed_s.mean,
+              1e3 * r.elapsed_s.std);
+  if (r.error)
+    std::printf("  error vs reference (best trial)  ATE %.4f m rms, %.4f m max, %.4f rad rms\n",
+                r.error->rmse_m, r.error->max_m, r.error->rmse_rad);
+}
+
+void run(const OptimizeOptions& options) {
+  OptimizeOptions o = options;
+  o.s.method = slam::parse_method(o.method);
+  o.s.refine.algorithm = slam::parse_refine_algorithm(o.nlopt_algorithm);
+  if (o.trials == 0) throw std::invalid_argument("--trials must be >= 1");
+  const slam::FragmentSet set = load(o);
+  const std::vector<slam::Pose2> ref = reference(o, set);
+  const std::vector<slam::OptimizeResult> trials = run_study(set, o);
+  const slam::StudyResult r = slam::summarize(o.input, o.s, trials, ref);
+  print_summary(r, set, o);
+
+  const std::string prefix =
+      o.output.empty() ? std::filesystem::path(o.input).stem().string() + "." + o.method : o.output;
+  write_atomically(prefix + ".json", [&](std::ostream& out) { slam::write_result(out, r); });
+  write_atomically(prefix + ".trials.csv",
+                   [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
+  write_atomically(prefix + ".convergence.csv",
+                   [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
+  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv\n", prefix.c_str(), prefix.c_str(),
+              prefix.c_str());
+  if (!o.g2o_out.empty()) {
+    write_atomically(o.g2o_out, [&](std::ostream& out) {
+      slam::write_g2o(out, slam::pose_graph_of(set, r.best.frames));
+    });
+    std::printf("wrote %s\n", o.g2o_out.c_str());
+  }
+  if (!o.tum_out.empty()) {
+    write_atomically(o.tum_out, [&](std::ostream& out) {
+      slam::write_tum(out, slam::world_trajectory(set, r.best.frames));
+    });
+    std::printf("wrote %s\n", o.tum_out.c_str());
+  }
+}
+
+}  // namespace
+
+void add_optimize_command(CLI::App& app) {
+  auto o = std::make_shared<OptimizeOptions>();
+  slam::OptimizeSettings& s = o->s;
+  CLI::App* cmd = app.add_subcommand("optimize", "Run an optimizer on a fragment set");
+  cmd->add_option("input", o->input, "fragment-set JSON or g2o pose graph (.g2o)")->required();
+  cmd->add_option("--method", o->method,
+                  "as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, "
+                  "random or exhaustive")
+      ->capture_default_str();
+  cmd->add_option("--trials", o->trials, "independent trials (trial t: seed mix(seed, t))")
+      ->capture_default_str();
+  cmd->add_option("--seed", s.seed, "seed of the study")->capture_default_str();
+  cmd->add_option("--threads", o->threads,
+                  "threads: trials run in parallel (with --trials 1: the ants); 0 = all cores")
+      ->capture_default_str();
+  cmd->add_option("--iterations", s.iterations, "ACO iterations / random rounds")
+      ->capture_default_str();
+  cmd->add_option("--time-limit", s.time_limit_s, "wall-clock budget per trial, s (0 = none)")
+      ->capture_default_str();
+  cmd->add_option("--ants", s.aco.ants, "ants per iteration (0 = the variant's default)")
+      ->capture_default_str();
+  cmd->add_option("--rho", s.aco.rho, "evaporation rate (0 = the variant's default)")
+      ->capture_default_str();
+  cmd->add_option("--p0", s.aco.p0, "hybrid: probability of a uniform choice")
+      ->capture_default_str();
+  cmd->add_option("--q0", s.aco.q0, "acs: probability of the greedy choice")->capture_default_str();
+  cmd->add_option("--nlopt-algorithm", o->nlopt_algorithm, "lbfgs, slsqp or bobyqa")
+      ->capture_default_str();
+  cmd->add_option("--bound-sigmas", s.refine.bound_sigmas,
+                  "NLopt box: samples' bounding box widened by this many sigmas")
+      ->capture_default_str();
+  cmd->add_option("--max-evaluations", s.refine.max_evaluations, "NLopt evaluations per refinement")
+      ->capture_default_str();
+  cmd->add_flag("--refine-each", s.refine_each_improvement,
+                "hybrid+nlopt: refine every new global-best ant, not only the final one");
+  cmd->add_option("--ceres-iterations", s.ceres.max_iterations, "Ceres iterations")
+      ->capture_default_str();
+  cmd->add_option("--max-paths", s.max_exhaustive_paths, "exhaustive: refuse larger trees")
+      ->capture_default_str();
+  cmd->add_option("-m,--samples", o->import.samples, "g2o input: samples drawn per alignment")
+      ->capture_default_str();
+  cmd->add_option("--reference", o->reference,
+                  "ground-truth poses (.g2o, .tum, `x y theta` lines) for the trajectory error");
+  cmd->add_option("-o,--output", o->output,
+                  "output prefix (default: <input stem>.<method>): PREFIX.json, "
+                  "PREFIX.trials.csv, PREFIX.convergence.csv");
+  cmd->add_option("--g2o-out", o->g2o_out, "write the best map as a g2o pose graph");
+  cmd->add_option("--tum-out", o->tum_out, "write the best map's trajectory in TUM format");
+  cmd->callback([o] {
+    o->import.seed = o->s.seed;
+    run(*o);
+  });
+}
+
+}  // namespace antslam::cli

@@ -1,0 +1,25 @@
+#pragma once
+// The fragment-set file (JSON, versioned; docs/fragment-set-format.md): what the frontend
+// writes and every optimizer reads. Loading validates everything (sizes, indices, finite
+// numbers, symmetric positive definite covariances, format and version) and fails with one
+// line naming the file, the field and the problem:
+//   set.json: fragments[3].alignment.covariance: covariance is not positive definite
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+#include "slamgraph/fragment_set.hpp"
+
+namespace antslam::slam {
+
+inline constexpr const char* kFragmentSetFormat = "antslam-fragment-set";
+inline constexpr int kFragmentSetVersion = 1;
+
+/// Writes the set (validated first) with round-trip precision.
+void write_fragment_set(std::ostream& out, const FragmentSet& set);
+/// Throws std::runtime_error "source: field: problem".
+FragmentSet read_fragment_set(std::istream& in, const std::string& source);
+FragmentSet read_fragment_set_file(const std::filesystem::path& path);
+
+}  // namespace antslam::slam

@@ -1,0 +1,67 @@
+#pragma once
+// NLopt local refinement (issue item 7): continuous optimisation of the alignments X_2..X_N,
+// minimising the same eq. (10) weight as the ants (AlignmentObjective, analytic gradient),
+// starting from a discrete ACO result or any other alignments.
+//
+// Bounds: each alignment stays within the bounding box of its samples and its mean, widened
+// by `bound_sigmas` standard deviations of its Gaussian per coordinate (angles as offsets from
+// the mean, so the box never straddles the +-pi cut). A start outside the box widens the box
+// to include it. The result is never worse than the start: the best point NLopt evaluated is
+// returned, and the start itself is evaluated first.
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "slamgraph/alignment_objective.hpp"
+#include "slamgraph/fragment_set.hpp"
+
+namespace antslam::slam {
+
+enum class RefineAlgorithm {
+  lbfgs,   ///< NLopt LD_LBFGS, gradient-based, bound-constrained (default)
+  slsqp,   ///< NLopt LD_SLSQP, gradient-based sequential quadratic programming
+  bobyqa,  ///< NLopt LN_BOBYQA, derivative-free (quadratic models in the box)
+};
+
+std::string_view to_string(RefineAlgorithm a);
+/// Throws std::invalid_argument listing the valid names.
+RefineAlgorithm parse_refine_algorithm(std::string_view name);
+
+struct RefineSettings {
+  RefineAlgorithm algorithm = RefineAlgorithm::lbfgs;  ///< NLopt algorithm
+  double bound_sigmas = 3.0;          ///< box widening beyond the samples, in standard deviations
+  int max_evaluations = 2000;         ///< objective evaluations per refinement (count)
+  double relative_tolerance = 1e-10;  ///< stop when the weight changes by less (fraction)
+  double time_limit_s = 0.0;          ///< wall-clock budget per refinement in seconds; 0 = none
+};
+
+struct RefineResult {
+  std::vector<Pose2> alignments;  ///< refined X_2..X_N
+  Scores start;                   ///< objectives at the start
+  Scores scores;                  ///< objectives at the result; weight <= start.weight
+  int evaluations = 0;            ///< objective evaluations used
+};
+
+/// Holds the objective and the bounds of one fragment set; refine() may be called many times.
+/// Not thread-safe; use one Refiner per thread.
+class Refiner {
+ public:
+  /// Validates the set and the settings (std::invalid_argument naming the problem).
+  Refiner(const FragmentSet& set, const RefineSettings& settings);
+
+  RefineResult refine(std::span<const Pose2> start);
+
+  /// The box of alignment i (0-based layer), as packed vectors (x, y, theta).
+  std::span<const double> lower() const { return lower_; }
+  std::span<const double> upper() const { return upper_; }
+
+ private:
+  AlignmentObjective objective_;
+  RefineSettings settings_;
+  std::vector<double> mean_angle_;  // mu_theta per alignment, to unwrap starts near it
+  std::vector<double> lower_, upper_;
+};
+
+}  // namespace antslam::slam

@@ -1,0 +1,54 @@
+#pragma once
+// The result file of an optimisation study (JSON, versioned; docs/fragment-set-format.md):
+// statistics over the trials and the best trial's map (weight, chi2, chosen samples, alignments,
+// world poses of every fragment).
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "slamgraph/evaluation.hpp"
+#include "slamgraph/optimize.hpp"
+#include "slamgraph/trials.hpp"
+
+namespace antslam::slam {
+
+inline constexpr const char* kResultFormat = "antslam-optimize-result";
+inline constexpr int kResultVersion = 1;
+
+struct StudyResult {
+  std::string fragment_set;              ///< what was optimised (file or name)
+  Method method = Method::hybrid;        ///< how
+  std::uint64_t seed = 1;                ///< study seed (trial t: trial_seed(seed, t))
+  std::size_t trials = 0;                ///< number of trials
+  Statistics weight;                     ///< eq. (10) over the trials
+  Statistics chi2;                       ///< least-squares cost over the trials
+  Statistics elapsed_s;                  ///< wall-clock seconds per trial
+  std::size_t best_trial = 0;            ///< trial with the lowest weight (first on ties)
+  OptimizeResult best;                   ///< that trial's result (convergence not stored)
+  std::optional<TrajectoryError> error;  ///< best trial's frames vs the reference, if known
+};
+
+/// Statistics of the trials; the error against `reference` (world poses of F_1..F_N) if given.
+StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& settings,
+                      std::span<const OptimizeResult> trials,
+                      std::span<const Pose2> reference = {});
+
+void write_result(std::ostream& out, const StudyResult& result);
+/// Throws std::runtime_error "source: field: problem".
+StudyResult read_result(std::istream& in, const std::string& source);
+StudyResult read_result_file(const std::filesystem::path& path);
+
+/// One row per trial: trial,seed,weight,chi2,iterations,evaluations,elapsed_s,time_to_best_s
+/// (seed: trial_seed(study_seed, trial)).
+void write_trials_csv(std::ostream& out, std::span<const OptimizeResult> trials,
+                      std::uint64_t study_seed);
+/// One row per improvement of each trial's best weight:
+/// trial,iteration,evaluations,elapsed_s,best_weight
+void write_convergence_csv(std::ostream& out, std::span<const OptimizeResult> trials);
+
+}  // namespace antslam::slam

@@ -1,0 +1,38 @@
+#pragma once
+// Many independent trials of one method (the paper averages 100): trial t runs with seed
+// trial_seed(seed, t) and a serial colony; trials are spread over threads, and the results do
+// not depend on how many.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "slamgraph/optimize.hpp"
+
+namespace antslam::slam {
+
+/// The seed of trial t of a study seeded with `seed`.
+std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial);
+
+/// Called after each trial, serialised, with the number of trials finished so far.
+using TrialsObserver = std::function<void(std::size_t finished)>;
+
+/// Runs `trials` trials of settings.method (settings.seed seeds the study, settings.threads is
+/// ignored: each trial is serial) on `threads` threads (0 = all cores).
+std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
+                                       std::size_t trials, std::size_t threads,
+                                       const TrialsObserver& observer = {});
+
+struct Statistics {
+  double mean = 0.0;  ///< arithmetic mean
+  double std = 0.0;   ///< sample standard deviation (n - 1); 0 for one value
+  double min = 0.0;   ///< smallest value
+  double max = 0.0;   ///< largest value
+};
+
+/// Throws std::invalid_argument for an empty span.
+Statistics statistics(std::span<const double> values);
+
+}  // namespace antslam::slam

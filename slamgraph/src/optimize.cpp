@@ -1,0 +1,164 @@
+#include "slamgraph/optimize.hpp"
+
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "optimize_detail.hpp"
+#include "slamgraph/search_baselines.hpp"
+#include "slamgraph/slam_problem.hpp"
+
+namespace antslam::slam {
+
+namespace {
+
+constexpr std::array kMethods{Method::ant_system,   Method::elitist, Method::rank_based,
+                              Method::acs,          Method::mmas,    Method::hybrid,
+                              Method::hybrid_nlopt, Method::nlopt,   Method::ceres,
+                              Method::ceres_robust, Method::random,  Method::exhaustive};
+
+void check_settings(const FragmentSet& set, const OptimizeSettings& s) {
+  if (s.iterations == 0 && !(s.time_limit_s > 0.0))
+    throw std::invalid_argument("optimize: set iterations or a time limit");
+  if (!(s.time_limit_s >= 0.0)) throw std::invalid_argument("optimize: time limit must be >= 0");
+  if (!s.initial.empty() && s.initial.size() != set.layer_count())
+    throw std::invalid_argument("optimize: initial has " + std::to_string(s.initial.size()) +
+                                " alignments, expected " + std::to_string(set.layer_count()));
+}
+
+void run_random(const FragmentSet& set, const OptimizeSettings& s, detail::Recorder& recorder,
+                OptimizeResult& result) {
+  const SlamProblem problem(set);
+  const std::size_t paths =
+      s.aco.ants > 0 ? s.aco.ants : aco::default_ants(aco::Variant::hybrid, 0, false, false);
+  const SearchResult r =
+      random_search(problem, s.iterations, paths, s.seed, s.time_limit_s,
+                    [&](std::uint64_t round, std::uint64_t evaluations, double weight) {
+                      recorder.improve(round, evaluations, weight);
+                    });
+  result.choice = r.choice;
+  result.evaluations = r.evaluations;
+  result.iterations = r.evaluations / paths;
+}
+
+void run_exhaustive(const FragmentSet& set, const OptimizeSettings& s, detail::Recorder& recorder,
+                    OptimizeResult& result) {
+  const SearchResult r = exhaustive_search(set, s.max_exhaustive_paths);
+  result.choice = r.choice;
+  result.evaluations = r.evaluations;
+  recorder.improve(0, r.evaluations, r.weight);
+}
+
+}  // namespace
+
+std::string_view to_string(Method m) {
+  switch (m) {
+    case Method::ant_system:
+      return "as";
+    case Method::elitist:
+      return "eas";
+    case Method::rank_based:
+      return "ras";
+    case Method::acs:
+      return "acs";
+    case Method::mmas:
+      return "mmas";
+    case Method::hybrid:
+      return "hybrid";
+    case Method::hybrid_nlopt:
+      return "hybrid+nlopt";
+    case Method::nlopt:
+      return "nlopt";
+    case Method::ceres:
+      return "ceres";
+    case Method::ceres_robust:
+      return "ceres-robust";
+    case Method::random:
+      return "random";
+    case Method::exhaustive:
+      return "exhaustive";
+  }
+  return "?";
+}
+
+Method parse_method(std::string_view name) {
+  std::string names;
+  for (Method m : kMethods) {
+    if (to_string(m) == name) return m;
+    names += (names.empty() ? "" : ", ") + std::string(to_string(m));
+  }
+  throw std::invalid_argument("unknown method '" + std::string(name) + "' (expected one of " +
+                              names + ")");
+}
+
+std::span<const Method> all_methods() { return kMethods; }
+
+bool is_discrete(Method m) {
+  if (m == Method::hybrid_nlopt) return false;  // its choice is only the refinement's start
+  return aco_variant(m).has_value() || m == Method::random || m == Method::exhaustive;
+}
+
+std::optional<aco::Variant> aco_variant(Method m) {
+  switch (m) {
+    case Method::ant_system:
+      return aco::Variant::ant_system;
+    case Method::elitist:
+      return aco::Variant::elitist;
+    case Method::rank_based:
+      return aco::Variant::rank_based;
+    case Method::acs:
+      return aco::Variant::acs;
+    case Method::mmas:
+      return aco::Variant::mmas;
+    case Method::hybrid:
+    case Method::hybrid_nlopt:
+      return aco::Variant::hybrid;
+    default:
+      return std::nullopt;
+  }
+}
+
+OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings,
+                        const OptimizeObserver& observer) {
+  validate(set);
+  check_settings(set, settings);
+  OptimizeResult result;
+  result.method = settings.method;
+  detail::Recorder recorder(result, observer);
+  const std::vector<Pose2> start =
+      settings.initial.empty() ? mean_alignments(set) : settings.initial;
+  switch (settings.method) {
+    case Method::nlopt: {
+      const RefineResult r = Refiner(set, settings.refine).refine(start);
+      result.alignments = r.alignments;
+      result.evaluations = static_cast<std::uint64_t>(r.evaluations);
+      break;
+    }
+    case Method::ceres:
+    case Method::ceres_robust: {
+      const CeresResult r =
+          optimize_with_ceres(set, start, settings.method == Method::ceres_robust, settings.ceres);
+      result.alignments = relative_alignments(r.frames);
+      result.iterations = static_cast<std::uint64_t>(r.iterations);
+      break;
+    }
+    case Method::random:
+      run_random(set, settings, recorder, result);
+      break;
+    case Method::exhaustive:
+      run_exhaustive(set, settings, recorder, result);
+      break;
+    default:
+      detail::run_aco(set, settings, recorder, result);
+      break;
+  }
+  if (result.alignments.empty()) result.alignments = chosen_alignments(set, result.choice);
+  result.frames = chain(result.alignments);
+  result.scores = score(set, result.alignments);
+  if (result.convergence.empty())
+    recorder.improve(result.iterations, result.evaluations, result.scores.weight);
+  result.elapsed_s = recorder.elapsed();
+  return result;
+}
+
+}  // namespace antslam::slam

@@ -1,0 +1,90 @@
+// The ACO methods of optimize(): the engine's colony on the SlamProblem, and hybrid+nlopt.
+
+#include <optional>
+
+#include "aco/backend_tbb.hpp"
+#include "optimize_detail.hpp"
+#include "slamgraph/slam_problem.hpp"
+
+namespace antslam::slam::detail {
+
+namespace {
+
+/// NLopt refinement of discrete paths, keeping the best continuous result.
+class PathRefiner {
+ public:
+  PathRefiner(const FragmentSet& set, const RefineSettings& settings)
+      : set_(&set), refiner_(set, settings) {}
+
+  /// Refines the path; returns the best weight of any refined path so far.
+  double refine(std::span<const std::uint32_t> path, std::uint64_t& evaluations) {
+    const RefineResult r = refiner_.refine(chosen_alignments(*set_, path));
+    evaluations += static_cast<std::uint64_t>(r.evaluations);
+    if (!best_ || r.scores.weight < best_->scores.weight) {
+      best_ = r;
+      start_.assign(path.begin(), path.end());
+    }
+    return best_->scores.weight;
+  }
+  const std::optional<RefineResult>& best() const { return best_; }
+  const std::vector<std::uint32_t>& start() const { return start_; }
+
+ private:
+  const FragmentSet* set_;
+  Refiner refiner_;
+  std::optional<RefineResult> best_;
+  std::vector<std::uint32_t> start_;
+};
+
+}  // namespace
+
+void run_aco(const FragmentSet& set, const OptimizeSettings& settings, Recorder& recorder,
+             OptimizeResult& result) {
+  const SlamProblem problem(set);
+  aco::Parameters p = settings.aco;
+  p.variant = aco_variant(settings.method).value();
+  p.seed = settings.seed;
+  const aco::ColonySettings colony_settings =
+      aco::colony_settings(p, problem.layer_count(), false, false);
+  const double rho = p.rho > 0.0 ? p.rho : aco::default_rho(p.variant, false);
+  const aco::Termination termination{.max_iterations = settings.iterations,
+                                     .time_limit_s = settings.time_limit_s};
+  const bool refine = settings.method == Method::hybrid_nlopt;
+  std::optional<PathRefiner> refiner;
+  if (refine) refiner.emplace(set, settings.refine);
+  const std::uint64_t ants = colony_settings.ants;
+  std::uint64_t refine_evaluations = 0;
+
+  const auto run = [&](auto backend) {
+    return aco::with_variant_policies(p, rho, [&](auto rule, auto update) {
+      aco::Colony<SlamProblem, decltype(rule), decltype(update), aco::NoLocalSearch,
+                  decltype(backend)>
+          colony(problem, colony_settings, rule, update, {}, backend);
+      return colony.run(termination, [&](const aco::IterationReport& r) {
+        if (!r.improved) return;
+        double best = r.global_best;
+        if (refine && settings.refine_each_improvement)
+          best = std::min(best, refiner->refine(colony.best().path, refine_evaluations));
+        recorder.improve(r.iteration, r.iteration * ants + refine_evaluations, best);
+      });
+    });
+  };
+  const aco::RunResult run_result =
+      settings.threads <= 1 ? run(aco::SerialBackend{}) : run(aco::TbbBackend(settings.threads));
+  result.iterations = run_result.iterations;
+  result.choice = run_result.best.path;
+  result.alignments = chosen_alignments(set, result.choice);
+  if (refine) {
+    // Algorithm 2 returns S_best (line 36); NLopt then refines it continuously (already done
+    // when every new global best was refined).
+    if (!settings.refine_each_improvement) {
+      const double best = refiner->refine(result.choice, refine_evaluations);
+      recorder.improve(result.iterations, result.iterations * ants + refine_evaluations, best);
+    }
+    result.choice = refiner->start();
+    result.alignments = refiner->best()->alignments;
+  }
+  result.evaluations = result.iterations * ants + refine_evaluations;
+}
+
+}  // namespace antslam::slam::detail

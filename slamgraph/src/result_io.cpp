@@ -1,0 +1,180 @@
+#include "slamgraph/result_io.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+#include "json_reader.hpp"
+#include "json_writer.hpp"
+
+namespace antslam::slam {
+
+namespace {
+
+using detail::JsonField;
+using json = nlohmann::ordered_json;
+
+json statistics_json(const Statistics& s) {
+  return {{"mean", s.mean}, {"std", s.std}, {"min", s.min}, {"max", s.max}};
+}
+
+Statistics read_statistics(const JsonField& f) {
+  f.only({"mean", "std", "min", "max"});
+  return {f.at("mean").number(), f.at("std").number(), f.at("min").number(), f.at("max").number()};
+}
+
+std::vector<Pose2> read_poses(const JsonField& f) {
+  std::vector<Pose2> poses;
+  const std::size_t n = f.array_size();
+  for (std::size_t i = 0; i < n; ++i) poses.push_back(f.item(i).pose());
+  return poses;
+}
+
+json best_json(const StudyResult& r) {
+  const OptimizeResult& b = r.best;
+  return {{"trial", r.best_trial},
+          {"weight", b.scores.weight},
+          {"chi2", b.scores.chi2},
+          {"choice", b.choice},
+          {"alignments", detail::poses_json(b.alignments)},
+          {"frames", detail::poses_json(b.frames)},
+          {"iterations", b.iterations},
+          {"evaluations", b.evaluations},
+          {"elapsed_s", b.elapsed_s},
+          {"time_to_best_s", b.time_to_best_s}};
+}
+
+void read_best(const JsonField& f, StudyResult& r) {
+  f.only({"trial", "weight", "chi2", "choice", "alignments", "frames", "iterations", "evaluations",
+          "elapsed_s", "time_to_best_s"});
+  OptimizeResult& b = r.best;
+  b.method = r.method;
+  r.best_trial = f.at("trial").integer();
+  if (r.best_trial >= r.trials) f.at("trial").fail("is not below `trials`");
+  b.scores = {f.at("weight").number(), f.at("chi2").number()};
+  const JsonField choice = f.at("choice");
+  for (std::size_t l = 0; l < choice.array_size(); ++l) {
+    const std::uint64_t c = choice.item(l).integer();
+    if (c > std::numeric_limits<std::uint32_t>::max())
+      choice.item(l).fail("sample index too large");
+    b.choice.push_back(static_cast<std::uint32_t>(c));
+  }
+  b.alignments = read_poses(f.at("alignments"));
+  b.frames = read_poses(f.at("frames"));
+  if (b.frames.size() != b.alignments.size() + 1)
+    f.at("frames").fail("expected one pose more than `alignments`");
+  if (!b.choice.empty() && b.choice.size() != b.alignments.size())
+    choice.fail("expected as many entries as `alignments`");
+  b.iterations = f.at("iterations").integer();
+  b.evaluations = f.at("evaluations").integer();
+  b.elapsed_s = f.at("elapsed_s").number();
+  b.time_to_best_s = f.at("time_to_best_s").number();
+}
+
+}  // namespace
+
+StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& settings,
+                      std::span<const OptimizeResult> trials, std::span<const Pose2> reference) {
+  if (trials.empty()) throw std::invalid_argument("summarize: no trials");
+  StudyResult r;
+  r.fragment_set = fragment_set;
+  r.method = settings.method;
+  r.seed = settings.seed;
+  r.trials = trials.size();
+  std::vector<double> weight, chi2, elapsed;
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    weight.push_back(trials[t].scores.weight);
+    chi2.push_back(trials[t].scores.chi2);
+    elapsed.push_back(trials[t].elapsed_s);
+    if (trials[t].scores.weight < trials[r.best_trial].scores.weight) r.best_trial = t;
+  }
+  r.weight = statistics(weight);
+  r.chi2 = statistics(chi2);
+  r.elapsed_s = statistics(elapsed);
+  r.best = trials[r.best_trial];
+  r.best.convergence.clear();
+  if (!reference.empty()) r.error = absolute_trajectory_error(r.best.frames, reference);
+  return r;
+}
+
+void write_result(std::ostream& out, const StudyResult& r) {
+  json doc = {{"format", kResultFormat},
+              {"version", kResultVersion},
+              {"fragment_set", r.fragment_set},
+              {"method", std::string(to_string(r.method))},
+              {"seed", r.seed},
+              {"trials", r.trials},
+              {"weight", statistics_json(r.weight)},
+              {"chi2", statistics_json(r.chi2)},
+              {"elapsed_s", statistics_json(r.elapsed_s)},
+              {"best", best_json(r)}};
+  if (r.error)
+    doc["trajectory_error"] = {{"rmse_m", r.error->rmse_m},
+                               {"max_m", r.error->max_m},
+                               {"rmse_rad", r.error->rmse_rad},
+                               {"poses", r.error->poses}};
+  detail::write_json(out, doc);
+}
+
+StudyResult read_result(std::istream& in, const std::string& source) {
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const nlohmann::json doc = detail::parse_json(text, source);
+  const JsonField root(doc, source, "");
+  detail::check_header(root, kResultFormat, kResultVersion);
+  root.only({"format", "version", "fragment_set", "method", "seed", "trials", "weight", "chi2",
+             "elapsed_s", "best", "trajectory_error"});
+  StudyResult r;
+  r.fragment_set = root.at("fragment_set").string();
+  try {
+    r.method = parse_method(root.at("method").string());
+  } catch (const std::invalid_argument& e) {
+    root.at("method").fail(e.what());
+  }
+  r.seed = root.at("seed").integer();
+  r.trials = root.at("trials").integer();
+  if (r.trials == 0) root.at("trials").fail("must be >= 1");
+  r.weight = read_statistics(root.at("weight"));
+  r.chi2 = read_statistics(root.at("chi2"));
+  r.elapsed_s = read_statistics(root.at("elapsed_s"));
+  read_best(root.at("best"), r);
+  if (root.has("trajectory_error")) {
+    const JsonField e = root.at("trajectory_error");
+    e.only({"rmse_m", "max_m", "rmse_rad", "poses"});
+    r.error = TrajectoryError{e.at("rmse_m").number(), e.at("max_m").number(),
+                              e.at("rmse_rad").number(), e.at("poses").integer()};
+  }
+  return r;
+}
+
+StudyResult read_result_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  return read_result(in, path.string());
+}
+
+void write_trials_csv(std::ostream& out, std::span<const OptimizeResult> trials,
+                      std::uint64_t study_seed) {
+  out << "trial,seed,weight,chi2,iterations,evaluations,elapsed_s,time_to_best_s\n"
+      << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    const OptimizeResult& r = trials[t];
+    out << t << ',' << trial_seed(study_seed, t) << ',' << r.scores.weight << ',' << r.scores.chi2
+        << ',' << r.iterations << ',' << r.evaluations << ',' << r.elapsed_s << ','
+        << r.time_to_best_s << '\n';
+  }
+}
+
+void write_convergence_csv(std::ostream& out, std::span<const OptimizeResult> trials) {
+  out << "trial,iteration,evaluations,elapsed_s,best_weight\n"
+      << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for (std::size_t t = 0; t < trials.size(); ++t)
+    for (const ConvergencePoint& p : trials[t].convergence)
+      out << t << ',' << p.iteration << ',' << p.evaluations << ',' << p.elapsed_s << ','
+          << p.best_weight << '\n';
+}
+
+}  // namespace antslam::slam

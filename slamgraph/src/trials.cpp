@@ -1,0 +1,54 @@
+#include "slamgraph/trials.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+
+#include "aco/backend_tbb.hpp"
+#include "aco/random.hpp"
+
+namespace antslam::slam {
+
+std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial) {
+  return aco::mix_seed(seed, trial, 0x7472);
+}
+
+std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
+                                       std::size_t trials, std::size_t threads,
+                                       const TrialsObserver& observer) {
+  if (trials == 0) throw std::invalid_argument("trials must be >= 1");
+  validate(set);
+  std::vector<OptimizeResult> results(trials);
+  std::mutex mutex;
+  std::size_t finished = 0;
+  aco::TbbBackend backend(threads);
+  backend.for_each(trials, [&](std::size_t t) {
+    OptimizeSettings s = settings;
+    s.seed = trial_seed(settings.seed, t);
+    s.threads = 1;
+    results[t] = optimize(set, s);
+    const std::lock_guard lock(mutex);
+    ++finished;
+    if (observer) observer(finished);
+  });
+  return results;
+}
+
+Statistics statistics(std::span<const double> values) {
+  if (values.empty()) throw std::invalid_argument("statistics of no values");
+  Statistics s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  s.mean = sum / static_cast<double>(values.size());
+  if (values.size() > 1) {
+    double sq = 0.0;
+    for (double v : values) sq += (v - s.mean) * (v - s.mean);
+    s.std = std::sqrt(sq / static_cast<double>(values.size() - 1));
+  }
+  return s;
+}
+
+}  // namespace antslam::slam

@@ -1,0 +1,131 @@
+// optimize(): every method, its result consistent with the model, determinism across threads.
+
+#include <gtest/gtest.h>
+
+#include "random_sets.hpp"
+#include "slamgraph/optimize.hpp"
+#include "slamgraph/search_baselines.hpp"
+#include "slamgraph/synth.hpp"
+#include "slamgraph/trials.hpp"
+
+namespace antslam::slam {
+namespace {
+
+OptimizeSettings quick(Method m, std::uint64_t seed = 1) {
+  OptimizeSettings s;
+  s.method = m;
+  s.seed = seed;
+  s.iterations = 60;
+  return s;
+}
+
+TEST(Optimize, EveryMethodReturnsAConsistentResult) {
+  const FragmentSet set = testing::random_set(5, 4, 2, 3);
+  const double optimum = exhaustive_search(set, 1000).weight;
+  for (Method m : all_methods()) {
+    SCOPED_TRACE(std::string(to_string(m)));
+    const OptimizeResult r = optimize(set, quick(m));
+    EXPECT_EQ(r.method, m);
+    ASSERT_EQ(r.alignments.size(), 4U);
+    ASSERT_EQ(r.frames.size(), 5U);
+    const std::vector<Pose2> frames = chain(r.alignments);
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(r.frames[i].x, frames[i].x);
+    const Scores s = score(set, r.alignments);
+    EXPECT_EQ(r.scores.weight, s.weight);
+    EXPECT_EQ(r.scores.chi2, s.chi2);
+    if (is_discrete(m)) {
+      ASSERT_EQ(r.choice.size(), 4U);
+      EXPECT_NEAR(r.scores.weight, path_weight(set, r.choice), 1e-12);
+      EXPECT_GE(r.scores.weight, optimum - 1e-12);
+    }
+    ASSERT_FALSE(r.convergence.empty());
+    for (std::size_t k = 1; k < r.convergence.size(); ++k)
+      EXPECT_LT(r.convergence[k].best_weight, r.convergence[k - 1].best_weight);
+    EXPECT_NEAR(r.convergence.back().best_weight, r.scores.weight, 1e-9);
+    EXPECT_GE(r.elapsed_s, r.time_to_best_s);
+  }
+}
+
+TEST(Optimize, ExhaustiveIsTheOptimumAndRandomUsesTheAntsBudget) {
+  const FragmentSet set = testing::random_set(5, 4, 2, 3);
+  EXPECT_NEAR(optimize(set, quick(Method::exhaustive)).scores.weight,
+              exhaustive_search(set, 1000).weight, 1e-12);
+  const OptimizeResult r = optimize(set, quick(Method::random));
+  EXPECT_EQ(r.evaluations, 60U * 20U);
+  EXPECT_EQ(r.iterations, 60U);
+}
+
+// NLopt refinement never worsens the ACO result it starts from (same seed: same ACO run).
+TEST(Optimize, HybridPlusNloptIsNeverWorseThanHybrid) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const FragmentSet set = testing::random_set(7, 5, 1 + seed % 2, seed, 0.5);
+    const OptimizeResult hybrid = optimize(set, quick(Method::hybrid, seed));
+    const OptimizeResult refined = optimize(set, quick(Method::hybrid_nlopt, seed));
+    EXPECT_EQ(refined.choice, hybrid.choice);
+    EXPECT_LE(refined.scores.weight, hybrid.scores.weight + 1e-12);
+    OptimizeSettings each = quick(Method::hybrid_nlopt, seed);
+    each.refine_each_improvement = true;
+    EXPECT_LE(optimize(set, each).scores.weight, refined.scores.weight + 1e-12);
+  }
+}
+
+TEST(Optimize, SameResultOnOneOrTwoThreads) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  for (Method m : {Method::hybrid, Method::acs, Method::mmas, Method::random}) {
+    OptimizeSettings s = quick(m, 5);
+    const OptimizeResult one = optimize(set, s);
+    s.threads = 2;
+    const OptimizeResult two = optimize(set, s);
+    EXPECT_EQ(one.choice, two.choice) << to_string(m);
+    EXPECT_EQ(one.scores.weight, two.scores.weight);
+  }
+}
+
+TEST(Trials, ResultsDoNotDependOnThreadsAndTrialsDiffer) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  const OptimizeSettings s = quick(Method::hybrid, 11);
+  std::size_t last = 0;
+  const auto one = run_trials(set, s, 6, 1, [&](std::size_t done) {
+    EXPECT_EQ(done, last + 1);
+    last = done;
+  });
+  const auto two = run_trials(set, s, 6, 2);
+  EXPECT_EQ(last, 6U);
+  for (std::size_t t = 0; t < 6; ++t) {
+    EXPECT_EQ(one[t].choice, two[t].choice);
+    EXPECT_EQ(one[t].scores.weight, two[t].scores.weight);
+  }
+  OptimizeSettings first = s;
+  first.seed = trial_seed(11, 0);
+  EXPECT_EQ(optimize(set, first).choice, one[0].choice);
+  EXPECT_NE(one[0].choice, one[1].choice);
+}
+
+TEST(Trials, Statistics) {
+  const std::vector<double> v{1.0, 2.0, 4.0};
+  const Statistics s = statistics(v);
+  EXPECT_DOUBLE_EQ(s.mean, 7.0 / 3.0);
+  EXPECT_DOUBLE_EQ(
+      s.std,
+      std::sqrt(((4.0 / 3) * (4.0 / 3) + (1.0 / 3) * (1.0 / 3) + (5.0 / 3) * (5.0 / 3)) / 2.0));
+  EXPECT_EQ(s.min, 1.0);
+  EXPECT_EQ(s.max, 4.0);
+  EXPECT_THROW(statistics({}), std::invalid_argument);
+}
+
+TEST(Optimize, RejectsNonsense) {
+  const FragmentSet set = testing::random_set(9, 20, 1, 1);
+  EXPECT_THROW(optimize(set, quick(Method::exhaustive)), std::invalid_argument);
+  OptimizeSettings s = quick(Method::hybrid);
+  s.iterations = 0;
+  EXPECT_THROW(optimize(set, s), std::invalid_argument);
+  s = quick(Method::ceres);
+  s.initial.resize(3);
+  EXPECT_THROW(optimize(set, s), std::invalid_argument);
+  EXPECT_EQ(parse_method("hybrid+nlopt"), Method::hybrid_nlopt);
+  EXPECT_EQ(parse_method("ceres-robust"), Method::ceres_robust);
+  EXPECT_THROW(parse_method("hybrid-nlopt"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace antslam::slam
