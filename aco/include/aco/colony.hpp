@@ -220,11 +220,12 @@ class Colony {
       local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop);
   }
 
-  /// Ant indices by increasing cost; ties keep ant order.
+  /// Ant indices by increasing cost; ties keep ant order. (std::sort on (cost, index) is the
+  /// stable order without stable_sort's buffer allocation on every iteration.)
   void rank() {
     std::iota(ranking_.begin(), ranking_.end(), 0U);
-    std::stable_sort(ranking_.begin(), ranking_.end(), [&](std::uint32_t a, std::uint32_t b) {
-      return ants_[a].cost < ants_[b].cost;
+    std::sort(ranking_.begin(), ranking_.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return ants_[a].cost < ants_[b].cost || (ants_[a].cost == ants_[b].cost && a < b);
     });
   }
 

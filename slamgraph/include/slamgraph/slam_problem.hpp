@@ -6,8 +6,9 @@
 //
 // The cost is the hot path of the colony (one call per ant), so everything that does not
 // depend on the choice is precomputed: each sample's term 1 - N(mu_i, Sigma_i)(s) and its
-// cos/sin; each closure's anchor cos/sin, hypothesis rotation and information matrix. The chain
-// of eq. (8) is then multiplications only, and each closure costs one atan2 and one exp.
+// cos/sin; each closure's anchor and information matrix. The chain of eq. (8) then needs only
+// multiplications and additions (rotations as cos/sin products, angles as plain sums, wrapped
+// once per closure), and each closure costs one exp.
 
 #include <cstddef>
 #include <cstdint>
@@ -29,13 +30,15 @@ class SlamProblem {
   /// Eq. (10) for one sample per layer (choice[l] < option_count(l)); thread-safe.
   double cost(std::span<const std::uint32_t> choice) const;
 
-  /// A pose as translation and the cosine/sine of its angle. No default member initialisers:
-  /// scratch arrays of frames stay uninitialised on the hot path.
+  /// A pose during the chain: translation, cos/sin of the angle, and the angle itself as the
+  /// unwrapped sum of the chain's angles. No default member initialisers: scratch arrays of
+  /// frames stay uninitialised on the hot path.
   struct Frame {
-    double x;  ///< metres
-    double y;  ///< metres
-    double c;  ///< cos(theta)
-    double s;  ///< sin(theta)
+    double x;      ///< metres
+    double y;      ///< metres
+    double c;      ///< cos(theta)
+    double s;      ///< sin(theta)
+    double theta;  ///< radians, not wrapped
   };
 
  private:
@@ -44,11 +47,16 @@ class SlamProblem {
     double unary;  ///< 1 - N(mu_i, Sigma_i)(s_{i,j})
   };
   struct Closure {
-    std::uint32_t slot;  ///< where the frame of F_a is kept during the chain; unused if a = 0
+    std::uint32_t slot;  ///< where F_a is kept while the chain runs on to F_b; unused if a = 0
     bool from_world;     ///< a = 0: F_a = W, nothing to keep
     Frame anchor;        ///< anchor point in F_b
-    Frame mean;          ///< H, its rotation as cos/sin
+    Pose2 mean;          ///< H
     double info[6];      ///< Omega_H: xx, xy, xt, yy, yt, tt
+  };
+  /// The closures that start (keep F_i) and end (evaluate) at fragment i.
+  struct Event {
+    std::size_t fragment;
+    std::vector<std::uint32_t> opening, closing;
   };
 
   double closure_term(const Closure& c, const Frame& from, const Frame& to) const;
@@ -57,11 +65,8 @@ class SlamProblem {
   std::vector<std::size_t> offset_;  ///< samples_ index of layer l's first option
   std::vector<Sample> samples_;
   std::vector<Closure> closures_;
+  std::vector<Event> events_;    ///< by increasing fragment
   std::size_t kept_frames_ = 0;  ///< closures with a > 0
-  // Events of fragment i (1..N-1), in CSR form: closures that start at i (keep F_i) and closures
-  // that end at i (evaluate); has_event_[i] lets the chain skip the lookups otherwise.
-  std::vector<std::uint32_t> open_begin_, open_ids_, close_begin_, close_ids_;
-  std::vector<std::uint8_t> has_event_;
 };
 
 }  // namespace antslam::slam
