@@ -82,11 +82,19 @@ double SlamProblem::chain_cost(std::span<const std::uint32_t> choice, Frame* ope
   Frame frame = kWorld;  // F_1 = W
   std::size_t l = 0;
   for (const Event& e : events_) {
-    // Layers up to fragment e.fragment: alignment terms of eq. (10) and the chain of eq. (8).
-    for (; l < e.fragment; ++l) {
+    // Layers up to fragment e.fragment: alignment terms of eq. (10) and the chain of eq. (8),
+    // two samples at a time (their product does not wait for the frame: half the latency).
+    for (; l + 1 < e.fragment; l += 2) {
+      const Sample& s = samples[offset[l] + pick[l]];
+      const Sample& t = samples[offset[l + 1] + pick[l + 1]];
+      weight += s.unary + t.unary;
+      frame = compose(frame, compose(s.pose, t.pose));
+    }
+    if (l < e.fragment) {
       const Sample& s = samples[offset[l] + pick[l]];
       weight += s.unary;
       frame = compose(frame, s.pose);
+      ++l;
     }
     for (std::uint32_t k : e.opening) opened[closures_[k].slot] = frame;
     for (std::uint32_t k : e.closing) {
