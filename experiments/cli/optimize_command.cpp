@@ -3,10 +3,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/atomic_file.hpp"
@@ -93,6 +95,7 @@ void run(const OptimizeOptions& options) {
   o.s.method = slam::parse_method(o.method);
   o.s.refine.algorithm = slam::parse_refine_algorithm(o.nlopt_algorithm);
   if (o.trials == 0) throw std::invalid_argument("--trials must be >= 1");
+  if (o.threads == 0) o.threads = std::max(1U, std::thread::hardware_concurrency());
   const slam::FragmentSet set = load(o);
   const std::vector<slam::Pose2> ref = reference(o, set);
   const std::vector<slam::OptimizeResult> trials = run_study(set, o);

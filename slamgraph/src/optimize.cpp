@@ -1,6 +1,7 @@
 #include "slamgraph/optimize.hpp"
 
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -18,9 +19,18 @@ constexpr std::array kMethods{Method::ant_system,   Method::elitist, Method::ran
                               Method::ceres_robust, Method::random,  Method::exhaustive};
 
 void check_settings(const FragmentSet& set, const OptimizeSettings& s) {
-  if (s.iterations == 0 && !(s.time_limit_s > 0.0))
-    throw std::invalid_argument("optimize: set iterations or a time limit");
-  if (!(s.time_limit_s >= 0.0)) throw std::invalid_argument("optimize: time limit must be >= 0");
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("optimize: ") + what);
+  };
+  require(s.iterations > 0 || s.time_limit_s > 0.0, "set iterations or a time limit");
+  require(s.time_limit_s >= 0.0, "time limit must be >= 0");
+  const aco::Parameters& p = s.aco;
+  require(p.rho >= 0.0 && p.rho <= 1.0, "rho must be in (0, 1] (0: the variant's default)");
+  require(p.p0 >= 0.0 && p.p0 <= 1.0, "p0 must be in [0, 1]");
+  require(p.q0 >= 0.0 && p.q0 <= 1.0, "q0 must be in [0, 1]");
+  require(p.alpha >= 0.0 && std::isfinite(p.alpha), "alpha must be finite and >= 0");
+  require(p.glob_best_freq >= 1, "globBestFreq must be >= 1");
+  require(p.tau_init > 0.0 && p.tau_max >= p.tau_init, "need 0 < tau_init <= tau_max");
   if (!s.initial.empty() && s.initial.size() != set.layer_count())
     throw std::invalid_argument("optimize: initial has " + std::to_string(s.initial.size()) +
                                 " alignments, expected " + std::to_string(set.layer_count()));

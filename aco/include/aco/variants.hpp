@@ -8,7 +8,7 @@
 //   ras      RandomProportional            RankUpdate      n (TSP) / 20   0.1
 //   acs      PseudoRandomProportional(q0)  AcsUpdate       10             0.1
 //   mmas     RandomProportional            MaxMinUpdate    n (TSP) / 20   0.02
-//   hybrid   UniformExploration(p0)        HybridUpdate    20             0.05
+//   hybrid   UniformExploration(p0)        HybridUpdate    20             1 (docs/slamgraph.md)
 // With local search, every variant except hybrid and acs defaults to 25 ants, and MMAS to
 // rho = 0.2 (Dorigo & Stuetzle 2004, Table 3.3 and Sec. 3.7.2; ACOTSP).
 
