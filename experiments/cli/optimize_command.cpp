@@ -160,6 +160,8 @@ void add_optimize_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--max-evaluations", s.refine.max_evaluations, "NLopt evaluations per refinement")
       ->capture_default_str();
+  cmd->add_option("--lbfgs-memory", s.refine.lbfgs_memory, "NLopt L-BFGS stored correction pairs")
+      ->capture_default_str();
   cmd->add_flag("--refine-each", s.refine_each_improvement,
                 "hybrid+nlopt: refine every new global-best ant, not only the final one");
   cmd->add_option("--ceres-iterations", s.ceres.max_iterations, "Ceres iterations")

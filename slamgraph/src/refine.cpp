@@ -72,8 +72,8 @@ Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
     : objective_(set), settings_(settings) {
   if (!(settings.bound_sigmas >= 0.0) || !std::isfinite(settings.bound_sigmas))
     throw std::invalid_argument("refine: bound_sigmas must be finite and >= 0");
-  if (settings.max_evaluations <= 0)
-    throw std::invalid_argument("refine: max_evaluations must be positive");
+  if (settings.max_evaluations <= 0 || settings.lbfgs_memory <= 0)
+    throw std::invalid_argument("refine: max_evaluations and lbfgs_memory must be positive");
   if (!(settings.relative_tolerance >= 0.0) || !(settings.time_limit_s >= 0.0))
     throw std::invalid_argument("refine: tolerance and time limit must be >= 0");
   for (std::size_t i = 1; i < set.fragments.size(); ++i) {
@@ -121,6 +121,8 @@ RefineResult Refiner::refine(std::span<const Pose2> start) {
   opt.set_maxeval(settings_.max_evaluations);
   opt.set_ftol_rel(settings_.relative_tolerance);
   if (settings_.time_limit_s > 0.0) opt.set_maxtime(settings_.time_limit_s);
+  if (settings_.algorithm == RefineAlgorithm::lbfgs)
+    opt.set_vector_storage(static_cast<unsigned>(settings_.lbfgs_memory));
   double final_weight = 0.0;
   try {
     opt.optimize(x, final_weight);

@@ -35,6 +35,8 @@ struct RefineSettings {
   int max_evaluations = 2000;         ///< objective evaluations per refinement (count)
   double relative_tolerance = 1e-10;  ///< stop when the weight changes by less (fraction)
   double time_limit_s = 0.0;          ///< wall-clock budget per refinement in seconds; 0 = none
+  int lbfgs_memory = 10;  ///< L-BFGS stored correction pairs (count); NLopt's own default grows
+                          ///< to about 1.3e6 / n pairs, which is slow on large graphs
 };
 
 struct RefineResult {
