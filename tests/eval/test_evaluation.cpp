@@ -83,7 +83,7 @@ TEST(Evaluate, NoAssociationNamesBothTimeRanges) {
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
                  "no estimated pose has a reference pose within max_dt = 0.02 s (estimate: 2 "
-                 "poses, 1 .. 2 s; reference: 1 poses, 10 .. 10 s)");
+                 "poses, 1.000000 .. 2.000000 s; reference: 1 poses, 10.000000 .. 10.000000 s)");
   }
 }
 

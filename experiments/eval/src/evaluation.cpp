@@ -14,7 +14,8 @@ namespace {
 std::string time_range(const slam::Trajectory& trajectory) {
   if (trajectory.empty()) return "no poses";
   std::ostringstream text;
-  text.precision(16);
+  text << std::fixed;
+  text.precision(6);
   text << trajectory.size() << " poses, " << trajectory.front().stamp << " .. "
        << trajectory.back().stamp << " s";
   return text.str();
