@@ -25,14 +25,14 @@ namespace antslam::cli {
 namespace {
 
 struct EvalOptions {
-  std::filesystem::path estimate;   ///< TUM file
-  std::filesystem::path reference;  ///< TUM file
-  std::filesystem::path relations;  ///< Kuemmerle relations file; empty = none
-  std::filesystem::path json;       ///< JSON result file; empty = none
-  std::filesystem::path aligned;    ///< TUM file for the aligned estimate; empty = none
-  eval::EvaluationSettings settings;
-  bool no_align = false;
-  std::optional<double> rpe_distance;  ///< metres
+  std::filesystem::path estimate;      ///< TUM file
+  std::filesystem::path reference;     ///< TUM file
+  std::filesystem::path relations;     ///< Kuemmerle relations file; empty = none
+  std::filesystem::path json;          ///< JSON result file; empty = none
+  std::filesystem::path aligned;       ///< TUM file for the aligned estimate; empty = none
+  eval::EvaluationSettings settings;   ///< tolerances (s), RPE step; align set from no_align
+  bool no_align = false;               ///< --no-align given
+  std::optional<double> rpe_distance;  ///< --rpe-distance, metres, if given
 };
 
 /// Accepts finite numbers > 0 (or >= 0 with allow_zero); CLI11 alone would let "nan" through.
