@@ -6,6 +6,7 @@
 namespace antslam::cli {
 
 // void add_<name>_command(CLI::App& app);  -- one per subcommand, defined in <name>_command.cpp
+void add_eval_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_g2o_command(CLI::App& app);
