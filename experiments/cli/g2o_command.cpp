@@ -8,7 +8,6 @@
 
 #include "cli/atomic_file.hpp"
 #include "commands.hpp"
-#include "slamgraph/evaluation.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
 

@@ -14,7 +14,8 @@
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
-#include "slamgraph/evaluation.hpp"
+#include "eval/alignment.hpp"
+#include "eval/ate.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
 #include "slamgraph/result_io.hpp"
@@ -73,6 +74,16 @@ std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
   })};
 }
 
+/// The best trial's fragment frames against the reference, after rigid SE(2) alignment.
+slam::TrajectoryError trajectory_error(std::span<const slam::Pose2> frames,
+                                       std::span<const slam::Pose2> reference) {
+  std::vector<eval::PosePair> pairs;
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    pairs.push_back({i, i, static_cast<double>(i), frames[i], reference[i]});
+  const eval::AteResult ate = eval::ate(pairs, eval::align(pairs));
+  return {ate.translation_m.rmse, ate.translation_m.max, ate.rotation_deg.rmse, pairs.size()};
+}
+
 void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
                    const OptimizeOptions& o) {
   std::printf("%s on %s (N = %zu, %zu closure%s): %zu trial%s on %zu thread%s\n",
@@ -86,8 +97,8 @@ void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
   std::printf("  time per trial   %.3f ms +- %.3f ms\n", 1e3 * r.elapsed_s.mean,
               1e3 * r.elapsed_s.std);
   if (r.error)
-    std::printf("  error vs reference (best trial)  ATE %.4f m rms, %.4f m max, %.4f rad rms\n",
-                r.error->rmse_m, r.error->max_m, r.error->rmse_rad);
+    std::printf("  error vs reference (best trial)  ATE %.4f m rms, %.4f m max, %.3f deg rms\n",
+                r.error->rmse_m, r.error->max_m, r.error->rmse_deg);
 }
 
 void run(const OptimizeOptions& options) {
@@ -99,7 +110,8 @@ void run(const OptimizeOptions& options) {
   const slam::FragmentSet set = load(o);
   const std::vector<slam::Pose2> ref = reference(o, set);
   const std::vector<slam::OptimizeResult> trials = run_study(set, o);
-  const slam::StudyResult r = slam::summarize(o.input, o.s, trials, ref);
+  slam::StudyResult r = slam::summarize(o.input, o.s, trials);
+  if (!ref.empty()) r.error = trajectory_error(r.best.frames, ref);
   print_summary(r, set, o);
 
   const std::string prefix =

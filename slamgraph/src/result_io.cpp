@@ -78,7 +78,7 @@ void read_best(const JsonField& f, StudyResult& r) {
 }  // namespace
 
 StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& settings,
-                      std::span<const OptimizeResult> trials, std::span<const Pose2> reference) {
+                      std::span<const OptimizeResult> trials) {
   if (trials.empty()) throw std::invalid_argument("summarize: no trials");
   StudyResult r;
   r.fragment_set = fragment_set;
@@ -97,7 +97,6 @@ StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& s
   r.elapsed_s = statistics(elapsed);
   r.best = trials[r.best_trial];
   r.best.convergence.clear();
-  if (!reference.empty()) r.error = absolute_trajectory_error(r.best.frames, reference);
   return r;
 }
 
@@ -115,7 +114,7 @@ void write_result(std::ostream& out, const StudyResult& r) {
   if (r.error)
     doc["trajectory_error"] = {{"rmse_m", r.error->rmse_m},
                                {"max_m", r.error->max_m},
-                               {"rmse_rad", r.error->rmse_rad},
+                               {"rmse_deg", r.error->rmse_deg},
                                {"poses", r.error->poses}};
   detail::write_json(out, doc);
 }
@@ -143,9 +142,9 @@ StudyResult read_result(std::istream& in, const std::string& source) {
   read_best(root.at("best"), r);
   if (root.has("trajectory_error")) {
     const JsonField e = root.at("trajectory_error");
-    e.only({"rmse_m", "max_m", "rmse_rad", "poses"});
+    e.only({"rmse_m", "max_m", "rmse_deg", "poses"});
     r.error = TrajectoryError{e.at("rmse_m").number(), e.at("max_m").number(),
-                              e.at("rmse_rad").number(), e.at("poses").integer()};
+                              e.at("rmse_deg").number(), e.at("poses").integer()};
   }
   return r;
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "slamgraph/g2o.hpp"
@@ -167,6 +169,22 @@ TEST(G2o, LoadsTheBundledPoseGraphs) {
   EXPECT_EQ(problem.layer_count(), 1727U);
   const std::vector<std::uint32_t> zeros(1727, 0);
   EXPECT_NEAR(problem.cost(zeros), path_weight(intel_set, zeros), 1e-6);
+}
+
+TEST(ReferencePoses, ReadsXyThetaLinesAndG2o) {
+  const auto gt = read_reference_poses(ANTSLAM_DATA_DIR "/posegraphs/manhattan3500.gt.dat");
+  EXPECT_EQ(gt.size(), 3500U);
+  EXPECT_EQ(gt[1].x, 1.0);
+  EXPECT_EQ(read_reference_poses(ANTSLAM_DATA_DIR "/posegraphs/ring.gt.g2o").size(), 434U);
+  std::filesystem::create_directories(ANTSLAM_TEST_TMP);
+  const std::string bad = ANTSLAM_TEST_TMP "/bad.dat";
+  std::ofstream(bad) << "1 2 3\n4 5\n";
+  try {
+    read_reference_poses(bad);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), bad + ":2: expected `x y theta`");
+  }
 }
 
 }  // namespace

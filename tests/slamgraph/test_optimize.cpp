@@ -122,13 +122,13 @@ TEST(Optimize, RejectsNonsense) {
   s = quick(Method::ceres);
   s.initial.resize(3);
   EXPECT_THROW(optimize(set, s), std::invalid_argument);
-  for (auto bad : {+[](OptimizeSettings& o) { o.aco.rho = -0.1; },
-                   +[](OptimizeSettings& o) { o.aco.rho = 1.5; },
-                   +[](OptimizeSettings& o) { o.aco.p0 = 2.0; },
-                   +[](OptimizeSettings& o) { o.aco.q0 = -1.0; },
-                   +[](OptimizeSettings& o) { o.aco.glob_best_freq = 0; },
-                   +[](OptimizeSettings& o) { o.aco.tau_max = 1.0; },
-                   +[](OptimizeSettings& o) { o.time_limit_s = -1.0; }}) {
+  for (auto bad :
+       {+[](OptimizeSettings& o) { o.aco.rho = -0.1; },
+        +[](OptimizeSettings& o) { o.aco.rho = 1.5; }, +[](OptimizeSettings& o) { o.aco.p0 = 2.0; },
+        +[](OptimizeSettings& o) { o.aco.q0 = -1.0; },
+        +[](OptimizeSettings& o) { o.aco.glob_best_freq = 0; },
+        +[](OptimizeSettings& o) { o.aco.tau_max = 1.0; },
+        +[](OptimizeSettings& o) { o.time_limit_s = -1.0; }}) {
     OptimizeSettings o = quick(Method::hybrid);
     bad(o);
     EXPECT_THROW(optimize(set, o), std::invalid_argument);

@@ -57,6 +57,11 @@ FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSetting
 /// (i-1, i) with their means, closures as edges (a, b) with measurement H * anchor^-1.
 PoseGraph pose_graph_of(const FragmentSet& set, std::span<const Pose2> frames);
 
+/// Reference poses of a graph's vertices for evaluation: a .g2o file (its vertices), a TUM
+/// trajectory (.tum) or lines of `x y theta` (e.g. manhattan3500.gt.dat). Throws
+/// std::runtime_error "source:line: problem".
+std::vector<Pose2> read_reference_poses(const std::filesystem::path& path);
+
 /// Covariance of z^-1 for z ~ N(measurement, covariance), to first order.
 Eigen::Matrix3d inverse_covariance(const Pose2& measurement, const Eigen::Matrix3d& covariance);
 

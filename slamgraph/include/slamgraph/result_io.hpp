@@ -11,7 +11,6 @@
 #include <span>
 #include <string>
 
-#include "slamgraph/evaluation.hpp"
 #include "slamgraph/optimize.hpp"
 #include "slamgraph/trials.hpp"
 
@@ -19,6 +18,15 @@ namespace antslam::slam {
 
 inline constexpr const char* kResultFormat = "antslam-optimize-result";
 inline constexpr int kResultVersion = 1;
+
+/// The best trial's frames against a reference (computed by the caller, e.g. with antslam::eval:
+/// rigid SE(2) alignment, then the absolute trajectory error).
+struct TrajectoryError {
+  double rmse_m = 0.0;    ///< translation RMSE, metres
+  double max_m = 0.0;     ///< largest translation error, metres
+  double rmse_deg = 0.0;  ///< heading RMSE, degrees
+  std::size_t poses = 0;  ///< poses compared
+};
 
 struct StudyResult {
   std::string fragment_set;              ///< what was optimised (file or name)
@@ -33,10 +41,9 @@ struct StudyResult {
   std::optional<TrajectoryError> error;  ///< best trial's frames vs the reference, if known
 };
 
-/// Statistics of the trials; the error against `reference` (world poses of F_1..F_N) if given.
+/// Statistics of the trials and the best one (no trajectory error: the caller adds it).
 StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& settings,
-                      std::span<const OptimizeResult> trials,
-                      std::span<const Pose2> reference = {});
+                      std::span<const OptimizeResult> trials);
 
 void write_result(std::ostream& out, const StudyResult& result);
 /// Throws std::runtime_error "source: field: problem".
