@@ -4,11 +4,12 @@
 and PNG to docs/figures/ and the tables to docs/slamgraph-results.md.
 
     /usr/bin/python3 scripts/slam_experiments.py [--antslam build/experiments/antslam]
-        [--threads 2] [--trials 100] [--only rho,methods,g2o]
+        [--threads 2] [--trials 100] [--only rho,methods,maps,g2o]
 """
 import argparse
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
@@ -208,15 +209,67 @@ def g2o_study(args, work, out):
     out.append("\n")
 
 
+def compose(a, b):
+    c, s_ = math.cos(a[2]), math.sin(a[2])
+    return (a[0] + c * b[0] - s_ * b[1], a[1] + s_ * b[0] + c * b[1], a[2] + b[2])
+
+
+def world_path(fragment_set, frames):
+    """The robot path in W: each fragment's trajectory moved by its frame (frames if none)."""
+    xs, ys = [], []
+    for frame, fragment in zip(frames, fragment_set["fragments"]):
+        for p in fragment.get("trajectory", [[0, 0, 0, 0]]):
+            w = compose(frame, p[1:])
+            xs.append(w[0])
+            ys.append(w[1])
+    return xs, ys
+
+
+def chain(alignments):
+    frames = [(0.0, 0.0, 0.0)]
+    for a in alignments:
+        frames.append(compose(frames[-1], a))
+    return frames
+
+
+def maps_study(args, work, out):
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    out.append("## Maps\n\nRobot paths of the shipped synthetic sets and of ring.g2o: the scan "
+               "matcher's map (chain of the means mu_i), the best of %d hybrid trials, Ceres "
+               "least squares, and the ground truth.\n\n" % args.trials)
+    for ax, name in zip(axes, ["paper15", "paper24", "ring"]):
+        if name == "ring":
+            fs_path = os.path.join(work, "ring.json")
+            run(args, "g2o", os.path.join(ROOT, "data", "posegraphs", "ring.g2o"), "-o", fs_path,
+                "--reference", os.path.join(ROOT, "data", "posegraphs", "ring.gt.g2o"))
+        else:
+            fs_path = os.path.join(ROOT, "data", "fragment-sets", name + ".json")
+        with open(fs_path) as f:
+            fs = json.load(f)
+        means = chain([fr["alignment"]["mean"] for fr in fs["fragments"][1:]])
+        ax.plot(*world_path(fs, means), color="0.6", lw=1, label="scan matcher (means)")
+        for method, color, trials in (("hybrid", "tab:red", args.trials), ("ceres", "tab:blue", 1)):
+            r, _ = optimize(args, work, fs_path, method, f"map-{name}-{method}", trials)
+            ax.plot(*world_path(fs, r["best"]["frames"]), color=color, lw=1.2,
+                    label=f"{method} (weight {r['best']['weight']:.2f})")
+        ax.plot(*world_path(fs, fs["reference"]), "k--", lw=1, label="ground truth")
+        ax.set_aspect("equal")
+        ax.set_title(name)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(FIGURES, "slamgraph-maps.png"), dpi=110)
+    out.append("![maps](figures/slamgraph-maps.png)\n\n")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("--antslam", default=os.path.join(ROOT, "build", "experiments", "antslam"))
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--trials", type=int, default=100)
-    p.add_argument("--only", default="rho,methods,g2o")
+    p.add_argument("--only", default="rho,methods,maps,g2o")
     args = p.parse_args()
     os.makedirs(FIGURES, exist_ok=True)
-    studies = {"rho": rho_study, "methods": methods_study, "g2o": g2o_study}
+    studies = {"rho": rho_study, "methods": methods_study, "maps": maps_study, "g2o": g2o_study}
     with open("/proc/loadavg") as f:
         load = f.read().split()[0]
     out = ["# AntSLAM results\n\n",
@@ -229,7 +282,7 @@ def main():
         for name in args.only.split(","):
             studies[name](args, work, out)
             print(f"slam_experiments: {name} done", file=sys.stderr)
-    suffix = "" if args.only == "rho,methods,g2o" else "-" + args.only.replace(",", "-")
+    suffix = "" if args.only == "rho,methods,maps,g2o" else "-" + args.only.replace(",", "-")
     with open(os.path.join(ROOT, "docs", f"slamgraph-results{suffix}.md"), "w") as f:
         f.writelines(out)
 

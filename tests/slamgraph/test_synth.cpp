@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "slamgraph/fragment_set_io.hpp"
@@ -92,6 +93,44 @@ TEST(Synth, SameSeedSameSetOtherSeedOtherSet) {
   other.seed = 2;
   EXPECT_EQ(text_of(synthesize(s)), text_of(synthesize(s)));
   EXPECT_NE(text_of(synthesize(s)), text_of(synthesize(other)));
+}
+
+/// Same structure and numbers up to libm rounding (the files were written on one platform).
+void expect_same_set(const FragmentSet& a, const FragmentSet& b) {
+  const auto near = [](const Pose2& p, const Pose2& q) {
+    return std::abs(p.x - q.x) < 1e-9 && std::abs(p.y - q.y) < 1e-9 &&
+           std::abs(wrap_angle(p.theta - q.theta)) < 1e-9;
+  };
+  ASSERT_EQ(a.fragments.size(), b.fragments.size());
+  ASSERT_EQ(a.closures.size(), b.closures.size());
+  for (std::size_t i = 1; i < a.fragments.size(); ++i) {
+    ASSERT_EQ(a.fragments[i].samples.size(), b.fragments[i].samples.size());
+    for (std::size_t j = 0; j < a.fragments[i].samples.size(); ++j)
+      EXPECT_TRUE(near(a.fragments[i].samples[j], b.fragments[i].samples[j])) << i << " " << j;
+    EXPECT_TRUE(near(a.fragments[i].alignment->mean(), b.fragments[i].alignment->mean()));
+  }
+  for (std::size_t c = 0; c < a.closures.size(); ++c) {
+    EXPECT_EQ(a.closures[c].to, b.closures[c].to);
+    EXPECT_TRUE(near(a.closures[c].hypothesis.mean(), b.closures[c].hypothesis.mean()));
+  }
+}
+
+// data/fragment-sets ships the presets (synth seed 1) and a two-lap set; they load, validate
+// and are what the generator writes today (data/fragment-sets/README.md).
+TEST(Synth, ShippedExamplesMatchTheGenerator) {
+  for (const char* name : {"paper9", "paper15", "paper24"}) {
+    SCOPED_TRACE(name);
+    expect_same_set(read_fragment_set_file(std::string(ANTSLAM_DATA_DIR) + "/fragment-sets/" +
+                                           name + ".json"),
+                    synthesize(synth_preset(name)));
+  }
+  SynthSettings laps = synth_preset("paper15");
+  laps.laps = 2;
+  laps.fragments = 30;
+  const FragmentSet shipped =
+      read_fragment_set_file(ANTSLAM_DATA_DIR "/fragment-sets/paper15-2laps.json");
+  expect_same_set(shipped, synthesize(laps));
+  EXPECT_EQ(shipped.closures.size(), 16U);
 }
 
 TEST(Synth, RejectsNonsenseSettings) {
