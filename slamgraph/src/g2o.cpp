@@ -5,18 +5,18 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include "aco/random.hpp"
+#include "text_lines.hpp"
 
 namespace antslam::slam {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& problem) {
-  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + problem);
-}
+using detail::fail_at;
 
 /// The remaining fields of a line as exactly `count` finite numbers.
 std::vector<double> numbers(std::istringstream& fields, std::size_t count,
@@ -25,14 +25,34 @@ std::vector<double> numbers(std::istringstream& fields, std::size_t count,
   std::string token;
   while (fields >> token) {
     double x = 0.0;
-    const char* end = token.data() + token.size();
-    const auto [ptr, ec] = std::from_chars(token.data(), end, x);
-    if (ec != std::errc() || ptr != end) fail(source, line, "'" + token + "' is not a number");
-    if (!std::isfinite(x)) fail(source, line, "non-finite number");
+    if (!detail::parse_number(token, x)) fail_at(source, line, "'" + token + "' is not a number");
+    if (!std::isfinite(x)) fail_at(source, line, "non-finite number");
     v.push_back(x);
   }
-  if (v.size() != count) fail(source, line, std::string("expected ") + layout);
+  if (v.size() != count) fail_at(source, line, std::string("expected ") + layout);
   return v;
+}
+
+/// The next field as a vertex id (a non-negative integer).
+std::uint64_t vertex_id(std::istringstream& fields, const std::string& source, std::size_t line) {
+  std::string token;
+  std::uint64_t id = 0;
+  if (fields >> token) {
+    const char* end = token.data() + token.size();
+    const auto [ptr, ec] = std::from_chars(token.data(), end, id);
+    if (ec == std::errc() && ptr == end) return id;
+  }
+  fail_at(source, line, "'" + token + "' is not a vertex id");
+}
+
+/// Lines of `x y theta` ('#' comments and blank lines skipped).
+std::vector<Pose2> read_pose_lines(std::istream& in, const std::string& source) {
+  std::vector<Pose2> poses;
+  detail::for_each_data_line(in, source, [&](std::istringstream& fields, std::size_t line) {
+    const auto v = numbers(fields, 3, source, line, "`x y theta`");
+    poses.push_back(Pose2::from_vector({v[0], v[1], v[2]}));
+  });
+  return poses;
 }
 
 /// Inverse of a symmetric positive definite matrix (covariance <-> information), symmetrised.
@@ -54,63 +74,50 @@ Eigen::Matrix3d right_compose_jacobian(const Pose2& p, const Pose2& b) {
 }  // namespace
 
 PoseGraph read_g2o(std::istream& in, const std::string& source) {
-  PoseGraph graph;
-  std::vector<std::size_t> vertex_line;
-  struct Pending {
-    PoseGraphEdge edge;
-    std::size_t line;
-  };
-  std::vector<Pending> edges;
-  std::string text;
-  std::size_t line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    std::istringstream fields(text);
+  std::map<std::uint64_t, std::pair<Pose2, std::size_t>> vertices;  // id -> (pose, line)
+  std::vector<std::pair<PoseGraphEdge, std::size_t>> edges;         // (edge, line)
+  detail::for_each_data_line(in, source, [&](std::istringstream& fields, std::size_t line) {
     std::string tag;
-    if (!(fields >> tag) || tag[0] == '#') continue;
+    fields >> tag;
     if (tag == "VERTEX_SE2") {
-      std::size_t id = 0;
-      if (!(fields >> id)) fail(source, line, "expected a vertex id");
+      const std::uint64_t id = vertex_id(fields, source, line);
       const auto v = numbers(fields, 3, source, line, "VERTEX_SE2 id x y theta");
-      if (id >= graph.vertices.size()) {
-        graph.vertices.resize(id + 1, Pose2{std::numeric_limits<double>::quiet_NaN()});
-        vertex_line.resize(id + 1, 0);
-      }
-      if (vertex_line[id] != 0)
-        fail(source, line,
-             "vertex " + std::to_string(id) + " already defined on line " +
-                 std::to_string(vertex_line[id]));
-      graph.vertices[id] = Pose2::from_vector({v[0], v[1], v[2]});
-      vertex_line[id] = line;
+      const auto [it, added] =
+          vertices.try_emplace(id, Pose2::from_vector({v[0], v[1], v[2]}), line);
+      if (!added)
+        fail_at(source, line,
+                "vertex " + std::to_string(id) + " already defined on line " +
+                    std::to_string(it->second.second));
     } else if (tag == "EDGE_SE2") {
       PoseGraphEdge e;
-      if (!(fields >> e.from >> e.to)) fail(source, line, "expected two vertex ids");
+      e.from = vertex_id(fields, source, line);
+      e.to = vertex_id(fields, source, line);
       const auto v =
           numbers(fields, 9, source, line, "EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33");
-      if (e.from == e.to) fail(source, line, "edge from a vertex to itself");
+      if (e.from == e.to) fail_at(source, line, "edge from a vertex to itself");
       e.measurement = Pose2::from_vector({v[0], v[1], v[2]});
       e.information << v[3], v[4], v[5], v[4], v[6], v[7], v[5], v[7], v[8];
       const Eigen::LLT<Eigen::Matrix3d> llt(e.information);
       if (llt.info() != Eigen::Success ||
           !(llt.matrixL().toDenseMatrix().diagonal().minCoeff() > 0.0))
-        fail(source, line, "information matrix is not positive definite");
-      edges.push_back({e, line});
-    } else if (tag == "FIX") {
-      continue;  // the first vertex is always held fixed
-    } else {
-      fail(source, line, "unsupported tag '" + tag + "' (expected VERTEX_SE2 or EDGE_SE2)");
+        fail_at(source, line, "information matrix is not positive definite");
+      edges.emplace_back(e, line);
+    } else if (tag != "FIX") {  // FIX: the first vertex is always held fixed
+      fail_at(source, line, "unsupported tag '" + tag + "' (expected VERTEX_SE2 or EDGE_SE2)");
     }
-  }
-  if (in.bad()) throw std::runtime_error(source + ": read error");
-  for (std::size_t id = 0; id < vertex_line.size(); ++id)
-    if (vertex_line[id] == 0)
+  });
+  if (vertices.empty()) throw std::runtime_error(source + ": no VERTEX_SE2 lines");
+  PoseGraph graph;
+  for (const auto& [id, vertex] : vertices) {
+    if (id != graph.vertices.size())
       throw std::runtime_error(source + ": vertex ids must be 0..n-1; vertex " +
-                               std::to_string(id) + " is missing");
-  if (graph.vertices.empty()) throw std::runtime_error(source + ": no VERTEX_SE2 lines");
-  for (const Pending& p : edges) {
-    if (p.edge.from >= graph.vertices.size() || p.edge.to >= graph.vertices.size())
-      fail(source, p.line, "edge to an undefined vertex");
-    graph.edges.push_back(p.edge);
+                               std::to_string(graph.vertices.size()) + " is missing");
+    graph.vertices.push_back(vertex.first);
+  }
+  for (const auto& [edge, line] : edges) {
+    if (edge.from >= graph.vertices.size() || edge.to >= graph.vertices.size())
+      fail_at(source, line, "edge to an undefined vertex");
+    graph.edges.push_back(edge);
   }
   return graph;
 }
@@ -202,6 +209,19 @@ PoseGraph pose_graph_of(const FragmentSet& set, std::span<const Pose2> frames) {
                            symmetric_inverse(0.5 * (cov + cov.transpose()))});
   }
   return graph;
+}
+
+std::vector<Pose2> read_reference_poses(const std::filesystem::path& path) {
+  const std::string ext = path.extension().string();
+  if (ext == ".g2o") return read_g2o_file(path).vertices;
+  if (ext == ".tum") {
+    std::vector<Pose2> poses;
+    for (const StampedPose& p : read_tum_file(path)) poses.push_back(p.pose);
+    return poses;
+  }
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  return read_pose_lines(in, path.string());
 }
 
 }  // namespace antslam::slam

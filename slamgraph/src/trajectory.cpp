@@ -1,55 +1,36 @@
 #include "slamgraph/trajectory.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
+#include "text_lines.hpp"
+
 namespace antslam::slam {
 
-namespace {
-
-[[noreturn]] void fail(const std::string& source, std::size_t line, const std::string& problem) {
-  throw std::runtime_error(source + ":" + std::to_string(line) + ": " + problem);
-}
-
-/// Whole-token number, accepting nan/inf so that they can be reported as non-finite.
-bool parse_number(const std::string& token, double& value) {
-  const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
-  return ec == std::errc() && ptr == end;
-}
-
-}  // namespace
+using detail::parse_number;
 
 Trajectory read_tum(std::istream& in, const std::string& source) {
   Trajectory trajectory;
-  std::string text;
-  std::size_t line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
-    std::istringstream fields(text);
+  detail::for_each_data_line(in, source, [&](std::istringstream& fields, std::size_t line) {
+    const auto fail = [&](const std::string& problem) { detail::fail_at(source, line, problem); };
     double v[8];
     std::string token;
     for (double& x : v) {
       if (!(fields >> token) || !parse_number(token, x))
-        fail(source, line, "expected 8 numbers `timestamp x y z qx qy qz qw`");
+        fail("expected 8 numbers `timestamp x y z qx qy qz qw`");
     }
-    if (fields >> token) fail(source, line, "unexpected extra field '" + token + "'");
+    if (fields >> token) fail("unexpected extra field '" + token + "'");
     for (double x : v)
-      if (!std::isfinite(x)) fail(source, line, "non-finite number");
+      if (!std::isfinite(x)) fail("non-finite number");
     const double qx = v[4], qy = v[5], qz = v[6], qw = v[7];
-    if (qx * qx + qy * qy + qz * qz + qw * qw < 1e-12) fail(source, line, "zero quaternion");
-    if (!trajectory.empty() && v[0] < trajectory.back().stamp)
-      fail(source, line, "timestamp decreases");
+    if (qx * qx + qy * qy + qz * qz + qw * qw < 1e-12) fail("zero quaternion");
+    if (!trajectory.empty() && v[0] < trajectory.back().stamp) fail("timestamp decreases");
     const double yaw = std::atan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz));
     trajectory.push_back({v[0], Pose2{v[1], v[2], wrap_angle(yaw)}});
-  }
-  if (in.bad()) throw std::runtime_error(source + ": read error");
+  });
   return trajectory;
 }
 

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "random_sets.hpp"
 #include "slamgraph/alignment_objective.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {

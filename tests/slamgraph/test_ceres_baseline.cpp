@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include "random_sets.hpp"
 #include "slamgraph/ceres_baseline.hpp"
 #include "slamgraph/synth.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {

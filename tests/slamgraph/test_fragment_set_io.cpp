@@ -5,18 +5,12 @@
 
 #include <sstream>
 
-#include "random_sets.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/synth.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {
-
-std::string to_text(const FragmentSet& set) {
-  std::ostringstream out;
-  write_fragment_set(out, set);
-  return out.str();
-}
 
 FragmentSet from_text(const std::string& text) {
   std::istringstream in(text);
@@ -35,9 +29,9 @@ TEST(FragmentSetIo, RoundTripIsExact) {
   s.fragments = 12;
   s.correlation = 0.3;
   const FragmentSet set = synthesize(s);
-  const std::string text = to_text(set);
+  const std::string text = testing::fragment_set_text(set);
   const FragmentSet back = from_text(text);
-  EXPECT_EQ(to_text(back), text);
+  EXPECT_EQ(testing::fragment_set_text(back), text);
   EXPECT_EQ(back.name, set.name);
   ASSERT_EQ(back.fragments.size(), set.fragments.size());
   ASSERT_EQ(back.closures.size(), set.closures.size());
@@ -76,12 +70,7 @@ std::string document(
 }
 
 std::string error_of(const std::string& text) {
-  try {
-    from_text(text);
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::error_of([&] { from_text(text); });
 }
 
 TEST(FragmentSetIo, ReadsTheMinimalDocument) {

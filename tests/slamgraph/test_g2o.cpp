@@ -8,6 +8,7 @@
 
 #include "slamgraph/g2o.hpp"
 #include "slamgraph/slam_problem.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {
@@ -29,12 +30,7 @@ PoseGraph parse(const std::string& text) {
 }
 
 std::string error_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::error_of([&] { parse(text); });
 }
 
 TEST(G2o, ReadsVerticesAndEdges) {
@@ -138,6 +134,10 @@ TEST(G2o, RejectsMalformedLines) {
   EXPECT_EQ(error_of("VERTEX_SE2 0 0 0 0\nEDGE_SE2 0 1 1 0 0 1 0 0 1 0\n"),
             "graph.g2o:2: expected EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33");
   EXPECT_EQ(error_of(""), "graph.g2o: no VERTEX_SE2 lines");
+  EXPECT_EQ(error_of("VERTEX_SE2 -1 0 0 0\n"), "graph.g2o:1: '-1' is not a vertex id");
+  EXPECT_EQ(error_of("VERTEX_SE2 0 0 0 0\nVERTEX_SE2 4000000000 0 0 0\n"),
+            "graph.g2o: vertex ids must be 0..n-1; vertex 1 is missing");
+  EXPECT_EQ(error_of("EDGE_SE2 0\n"), "graph.g2o:1: '' is not a vertex id");
 }
 
 TEST(G2o, ImportNeedsAChainAndAClosure) {
@@ -184,6 +184,13 @@ TEST(ReferencePoses, ReadsXyThetaLinesAndG2o) {
     FAIL();
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), bad + ":2: expected `x y theta`");
+  }
+  std::ofstream(bad) << "# x y theta\n1 2 nan\n";
+  try {
+    read_reference_poses(bad);
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), bad + ":2: non-finite number");
   }
 }
 

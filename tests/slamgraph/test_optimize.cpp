@@ -2,11 +2,11 @@
 
 #include <gtest/gtest.h>
 
-#include "random_sets.hpp"
 #include "slamgraph/optimize.hpp"
 #include "slamgraph/search_baselines.hpp"
 #include "slamgraph/synth.hpp"
 #include "slamgraph/trials.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {

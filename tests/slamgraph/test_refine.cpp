@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "random_sets.hpp"
 #include "slamgraph/refine.hpp"
 #include "slamgraph/synth.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "slamgraph/result_io.hpp"
 #include "slamgraph/synth.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {
@@ -40,13 +41,10 @@ TEST(ResultIo, RoundTrip) {
 
 TEST(ResultIo, RejectsBadFiles) {
   const auto error_of = [](const std::string& text) {
-    std::istringstream in(text);
-    try {
+    return testing::error_of([&] {
+      std::istringstream in(text);
       read_result(in, "r.json");
-    } catch (const std::runtime_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    });
   };
   EXPECT_EQ(error_of(R"({"format": "antslam-fragment-set", "version": 1})"),
             "r.json: format: expected \"antslam-optimize-result\"");

@@ -5,9 +5,9 @@
 #include <limits>
 
 #include "aco/variants.hpp"
-#include "random_sets.hpp"
 #include "slamgraph/search_baselines.hpp"
 #include "slamgraph/slam_problem.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {

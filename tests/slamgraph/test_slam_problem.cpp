@@ -8,8 +8,8 @@
 #include <Eigen/LU>
 
 #include "aco/problem.hpp"
-#include "random_sets.hpp"
 #include "slamgraph/slam_problem.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {

@@ -8,15 +8,10 @@
 
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/synth.hpp"
+#include "support.hpp"
 
 namespace antslam::slam {
 namespace {
-
-std::string text_of(const FragmentSet& set) {
-  std::ostringstream out;
-  write_fragment_set(out, set);
-  return out.str();
-}
 
 TEST(Synth, PresetsHaveThePapersSizes) {
   for (const auto& [name, n] : {std::pair{"paper9", 9U}, {"paper15", 15U}, {"paper24", 24U}}) {
@@ -91,8 +86,9 @@ TEST(Synth, SameSeedSameSetOtherSeedOtherSet) {
   const SynthSettings s = synth_preset("paper9");
   SynthSettings other = s;
   other.seed = 2;
-  EXPECT_EQ(text_of(synthesize(s)), text_of(synthesize(s)));
-  EXPECT_NE(text_of(synthesize(s)), text_of(synthesize(other)));
+  EXPECT_EQ(testing::fragment_set_text(synthesize(s)), testing::fragment_set_text(synthesize(s)));
+  EXPECT_NE(testing::fragment_set_text(synthesize(s)),
+            testing::fragment_set_text(synthesize(other)));
 }
 
 /// Same structure and numbers up to libm rounding (the files were written on one platform).
@@ -120,9 +116,9 @@ void expect_same_set(const FragmentSet& a, const FragmentSet& b) {
 TEST(Synth, ShippedExamplesMatchTheGenerator) {
   for (const char* name : {"paper9", "paper15", "paper24"}) {
     SCOPED_TRACE(name);
-    expect_same_set(read_fragment_set_file(std::string(ANTSLAM_DATA_DIR) + "/fragment-sets/" +
-                                           name + ".json"),
-                    synthesize(synth_preset(name)));
+    expect_same_set(
+        read_fragment_set_file(std::string(ANTSLAM_DATA_DIR) + "/fragment-sets/" + name + ".json"),
+        synthesize(synth_preset(name)));
   }
   SynthSettings laps = synth_preset("paper15");
   laps.laps = 2;

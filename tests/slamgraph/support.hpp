@@ -1,13 +1,17 @@
 #pragma once
-// Small random fragment sets for the tests: arbitrary alignments, correlated covariances, random
-// anchors and several loop closures, so that nothing relies on the structure the synthetic
-// generator happens to have.
+// Helpers of the slamgraph tests. Small random fragment sets: arbitrary alignments, correlated
+// covariances, random anchors and several loop closures, so that nothing relies on the
+// structure the synthetic generator happens to have. And the message of an expected error.
 
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include "aco/random.hpp"
 #include "slamgraph/fragment_set.hpp"
+#include "slamgraph/fragment_set_io.hpp"
 
 namespace antslam::slam::testing {
 
@@ -66,6 +70,24 @@ inline FragmentSet random_set(std::size_t n, std::size_t m, std::size_t closures
   }
   validate(set);
   return set;
+}
+
+/// The set as its file text.
+inline std::string fragment_set_text(const FragmentSet& set) {
+  std::ostringstream out;
+  write_fragment_set(out, set);
+  return out.str();
+}
+
+/// The message of the std::runtime_error that f() throws, or "no error".
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 }  // namespace antslam::slam::testing
