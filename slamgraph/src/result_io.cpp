@@ -1,7 +1,7 @@
 #include "slamgraph/result_io.hpp"
 
+#include <charconv>
 #include <fstream>
-#include <iomanip>
 #include <iterator>
 #include <limits>
 #include <ostream>
@@ -73,6 +73,13 @@ void read_best(const JsonField& f, StudyResult& r) {
   b.evaluations = f.at("evaluations").integer();
   b.elapsed_s = f.at("elapsed_s").number();
   b.time_to_best_s = f.at("time_to_best_s").number();
+}
+
+/// The shortest text that reads back as the same double.
+std::string shortest(double v) {
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, end);
 }
 
 }  // namespace
@@ -157,23 +164,21 @@ StudyResult read_result_file(const std::filesystem::path& path) {
 
 void write_trials_csv(std::ostream& out, std::span<const OptimizeResult> trials,
                       std::uint64_t study_seed) {
-  out << "trial,seed,weight,chi2,iterations,evaluations,elapsed_s,time_to_best_s\n"
-      << std::setprecision(std::numeric_limits<double>::max_digits10);
+  out << "trial,seed,weight,chi2,iterations,evaluations,elapsed_s,time_to_best_s\n";
   for (std::size_t t = 0; t < trials.size(); ++t) {
     const OptimizeResult& r = trials[t];
-    out << t << ',' << trial_seed(study_seed, t) << ',' << r.scores.weight << ',' << r.scores.chi2
-        << ',' << r.iterations << ',' << r.evaluations << ',' << r.elapsed_s << ','
-        << r.time_to_best_s << '\n';
+    out << t << ',' << trial_seed(study_seed, t) << ',' << shortest(r.scores.weight) << ','
+        << shortest(r.scores.chi2) << ',' << r.iterations << ',' << r.evaluations << ','
+        << shortest(r.elapsed_s) << ',' << shortest(r.time_to_best_s) << '\n';
   }
 }
 
 void write_convergence_csv(std::ostream& out, std::span<const OptimizeResult> trials) {
-  out << "trial,iteration,evaluations,elapsed_s,best_weight\n"
-      << std::setprecision(std::numeric_limits<double>::max_digits10);
+  out << "trial,iteration,evaluations,elapsed_s,best_weight\n";
   for (std::size_t t = 0; t < trials.size(); ++t)
     for (const ConvergencePoint& p : trials[t].convergence)
-      out << t << ',' << p.iteration << ',' << p.evaluations << ',' << p.elapsed_s << ','
-          << p.best_weight << '\n';
+      out << t << ',' << p.iteration << ',' << p.evaluations << ',' << shortest(p.elapsed_s) << ','
+          << shortest(p.best_weight) << '\n';
 }
 
 }  // namespace antslam::slam
