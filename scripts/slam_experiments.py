@@ -4,7 +4,8 @@
 and PNG to docs/figures/ and the tables to docs/slamgraph-results.md.
 
     /usr/bin/python3 scripts/slam_experiments.py [--antslam build/experiments/antslam]
-        [--threads 2] [--trials 100] [--only rho,methods,maps,g2o]
+        [--bench build/bench/bench_slam] [--threads 2] [--trials 100]
+        [--only scaling,rho,methods,maps,g2o]
 """
 import argparse
 import csv
@@ -261,15 +262,46 @@ def maps_study(args, work, out):
     out.append("![maps](figures/slamgraph-maps.png)\n\n")
 
 
+def scaling_study(args, work, out):
+    """100 trials of paper9 on 1 and 2 threads beside a pure-arithmetic control."""
+    with open("/proc/loadavg") as f:
+        load = f.read().split()[0]
+    text = subprocess.run([args.bench, "--benchmark_filter=Trials|Control",
+                           "--benchmark_repetitions=3", "--benchmark_format=json"],
+                          check=True, capture_output=True, text=True).stdout
+    runs = json.loads(text)["benchmarks"]
+    best = {}
+    for b in runs:
+        if b.get("run_type") != "iteration":
+            continue
+        name = b["run_name"].split("/real_time")[0]
+        rate = b.get("trials_per_s", b.get("tasks_per_s"))
+        best[name] = max(best.get(name, 0.0), rate)
+    trials = best["BM_Trials/2"] / best["BM_Trials/1"]
+    control = best["BM_ParallelControl/2"] / best["BM_ParallelControl/1"]
+    out.append("## Thread scaling\n\n`build/bench/bench_slam --benchmark_filter='Trials|Control' "
+               "--benchmark_repetitions=3` (best of 3; load average %s before the run). "
+               "BM_Trials: 100 independent hybrid trials of paper9 (paper configuration), "
+               "spread over TBB threads; BM_ParallelControl: 100 tasks of pure arithmetic "
+               "spread the same way, i.e. what the shared machine gave at that moment.\n\n" % load)
+    out.append("| | 1 thread | 2 threads | speedup |\n|---|---|---|---|\n")
+    out.append(f"| trials per second | {best['BM_Trials/1']:.1f} | {best['BM_Trials/2']:.1f} | "
+               f"{trials:.2f} |\n")
+    out.append(f"| control tasks per second | {best['BM_ParallelControl/1']:.1f} | "
+               f"{best['BM_ParallelControl/2']:.1f} | {control:.2f} |\n\n")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("--antslam", default=os.path.join(ROOT, "build", "experiments", "antslam"))
+    p.add_argument("--bench", default=os.path.join(ROOT, "build", "bench", "bench_slam"))
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--trials", type=int, default=100)
-    p.add_argument("--only", default="rho,methods,maps,g2o")
+    p.add_argument("--only", default="scaling,rho,methods,maps,g2o")
     args = p.parse_args()
     os.makedirs(FIGURES, exist_ok=True)
-    studies = {"rho": rho_study, "methods": methods_study, "maps": maps_study, "g2o": g2o_study}
+    studies = {"scaling": scaling_study, "rho": rho_study, "methods": methods_study,
+               "maps": maps_study, "g2o": g2o_study}
     with open("/proc/loadavg") as f:
         load = f.read().split()[0]
     out = ["# AntSLAM results\n\n",
@@ -282,7 +314,7 @@ def main():
         for name in args.only.split(","):
             studies[name](args, work, out)
             print(f"slam_experiments: {name} done", file=sys.stderr)
-    suffix = "" if args.only == "rho,methods,maps,g2o" else "-" + args.only.replace(",", "-")
+    suffix = "" if args.only == "scaling,rho,methods,maps,g2o" else "-" + args.only.replace(",", "-")
     with open(os.path.join(ROOT, "docs", f"slamgraph-results{suffix}.md"), "w") as f:
         f.writelines(out)
 
