@@ -4,7 +4,7 @@
 and PNG to docs/figures/ and the tables to docs/slamgraph-results.md.
 
     /usr/bin/python3 scripts/slam_experiments.py [--antslam build/experiments/antslam]
-        [--bench build/bench/bench_slam] [--threads 2] [--trials 100]
+        [--bench build/bench/bench_slam] [--threads 1] [--trials 100]
         [--only scaling,rho,methods,maps,g2o]
 """
 import argparse
@@ -28,6 +28,7 @@ PRESETS = ["paper9", "paper15", "paper24"]
 RHOS = [0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.8, 0.9, 0.95, 1.0]
 METHODS = ["as", "eas", "ras", "acs", "mmas", "hybrid", "hybrid+nlopt", "random", "nlopt",
            "ceres", "ceres-robust"]
+DISCRETE = ["as", "eas", "ras", "acs", "mmas", "hybrid", "random"]
 GRAPHS = [("ring", "ring.gt.g2o"), ("mit", None), ("intel", None),
           ("manhattan3500", "manhattan3500.gt.dat")]
 GRAPH_METHODS = ["ceres", "ceres-robust", "nlopt", "hybrid", "hybrid+nlopt"]
@@ -92,7 +93,8 @@ def rho_study(args, work, out):
 
 
 def step_mean(traces, grid):
-    """Mean and std over trials of the best weight (a step function of time) on a grid."""
+    """Mean and std over trials of the best weight (a step function of time) on a grid; a grid
+    point is drawn once 95% of the trials have a first result."""
     means, stds = [], []
     for t in grid:
         vals = []
@@ -103,7 +105,7 @@ def step_mean(traces, grid):
                     v = w
             if v is not None:
                 vals.append(v)
-        if len(vals) < len(traces):
+        if len(vals) < 0.95 * len(traces):
             means.append(float("nan"))
             stds.append(float("nan"))
             continue
@@ -146,7 +148,9 @@ def methods_study(args, work, out):
                        f"{r['weight']['min']:.4f} | {r['chi2']['mean']:.4g} | "
                        f"{1e3 * r['elapsed_s']['mean']:.2f} | {ate:.3f} |\n")
             ax.errorbar([1e3 * r["elapsed_s"]["mean"]], [r["weight"]["mean"]],
-                        yerr=[r["weight"]["std"]], marker="o", capsize=3, label=method)
+                        yerr=[r["weight"]["std"]], capsize=3, label=method,
+                        color=plt.cm.tab20(METHODS.index(method) / len(METHODS)),
+                        marker="o" if method in DISCRETE else "s")
             if method in ("hybrid", "mmas", "acs", "random", "hybrid+nlopt"):
                 traces = read_traces(prefix)
                 end = max(t[-1][0] for t in traces)
@@ -295,7 +299,8 @@ def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("--antslam", default=os.path.join(ROOT, "build", "experiments", "antslam"))
     p.add_argument("--bench", default=os.path.join(ROOT, "build", "bench", "bench_slam"))
-    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--threads", type=int, default=1,
+                   help="threads of antslam optimize (1: per-trial times are not shared)")
     p.add_argument("--trials", type=int, default=100)
     p.add_argument("--only", default="scaling,rho,methods,maps,g2o")
     args = p.parse_args()
