@@ -130,29 +130,31 @@ std::vector<WeightedPose> box_candidates(const DistanceField& field, const Likel
 
 }  // namespace
 
-slam::Gaussian2 posterior_gaussian(const DistanceField& field, const LikelihoodModel& model,
+PosteriorSamples posterior_samples(const DistanceField& field, const LikelihoodModel& model,
                                    std::span<const Eigen::Vector2d> points,
                                    const slam::Pose2& center, const Eigen::Matrix3d& guess,
-                                   const PosteriorSettings& settings, const slam::Pose2& anchor) {
+                                   const PosteriorSettings& settings) {
   const int steps = std::max(1, settings.steps);
   Eigen::Vector3d half = box_half_widths(guess, 3.0, settings);
-  std::vector<WeightedPose> candidates;
-  Eigen::Vector3d spacing;
+  PosteriorSamples out{{}, center, half / steps};
   for (int round = 0; round < std::max(1, settings.rounds); ++round) {
-    spacing = half / steps;
-    candidates = box_candidates(field, model, points, center, spacing, steps);
-    const Eigen::Matrix3d floor = (spacing.array().square() / 12.0).matrix().asDiagonal();
+    out.spacing = half / steps;
+    out.candidates = box_candidates(field, model, points, center, out.spacing, steps);
     const Eigen::Vector3d refit =
-        box_half_widths(moment_match(candidates, floor).covariance(), 3.5, settings);
+        box_half_widths(posterior_gaussian(out).covariance(), 3.5, settings);
     const double change = (refit.array() / half.array()).log().abs().maxCoeff();
     half = refit;
     if (change < std::log(1.3)) break;
   }
-  // Eqs. (5)-(6) over the anchor's poses; each candidate stands for its lattice cell.
-  for (WeightedPose& c : candidates) c.pose = c.pose * anchor;
-  const Eigen::Matrix3d cell = (spacing.array().square() / 12.0).matrix().asDiagonal();
-  return moment_match(candidates,
-                      compose_covariance(center, cell, anchor, Eigen::Matrix3d::Zero()));
+  return out;
+}
+
+slam::Gaussian2 posterior_gaussian(const PosteriorSamples& samples, const slam::Pose2& anchor) {
+  const Eigen::Matrix3d cell = (samples.spacing.array().square() / 12.0).matrix().asDiagonal();
+  std::vector<WeightedPose> moved = samples.candidates;
+  for (WeightedPose& c : moved) c.pose = c.pose * anchor;
+  return moment_match(moved,
+                      compose_covariance(samples.center, cell, anchor, Eigen::Matrix3d::Zero()));
 }
 
 }  // namespace antslam::frontend

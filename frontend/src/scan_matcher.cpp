@@ -125,7 +125,8 @@ MatchResult ScanMatcher::match(const Points& points, const slam::Pose2& predicti
   const LikelihoodModel model{s.sigma, s.temperature};
   const Eigen::Matrix3d guess = laplace_covariance(best.hessian, model, s.posterior);
   MatchResult result;
-  result.gaussian = posterior_gaussian(fine, model, points, best.pose, guess, s.posterior);
+  result.gaussian =
+      posterior_gaussian(posterior_samples(fine, model, points, best.pose, guess, s.posterior));
   result.best = best.pose;
   result.matched = true;
   result.points = points.size();

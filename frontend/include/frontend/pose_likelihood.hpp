@@ -9,8 +9,10 @@
 
 #include <Eigen/Core>
 #include <span>
+#include <vector>
 
 #include "frontend/distance_field.hpp"
+#include "frontend/pose_covariance.hpp"
 #include "slamgraph/gaussian2.hpp"
 #include "slamgraph/pose2.hpp"
 
@@ -45,16 +47,25 @@ struct PosteriorSettings {
   double max_angular = 0.2;     ///< radians, largest half-width in heading
 };
 
-/// Eqs. (5)-(6): candidate poses x_k on a box around `center` (the set {x : |x - x_hat| <=
-/// Delta}), weighted by p(z | m, x_k), moment-matched. Delta starts at 3 sigma of `guess` (a
-/// covariance estimate, e.g. the Laplace approximation) and is re-fitted to 3.5 sigma of the
-/// result, within the settings' limits. The Gaussian is over `pose * anchor` (anchor = identity:
-/// over the pose itself; a loop closure puts its anchor point there).
-slam::Gaussian2 posterior_gaussian(const DistanceField& field, const LikelihoodModel& model,
+/// The candidate set of eqs. (5)-(6): poses x_k on a box lattice around `center` (the set
+/// {x : |x - x_hat| <= Delta}), each with log p(z | m, x_k).
+struct PosteriorSamples {
+  std::vector<WeightedPose> candidates;  ///< poses and log-likelihoods
+  slam::Pose2 center;                    ///< x_hat
+  Eigen::Vector3d spacing;               ///< lattice steps (m, m, rad)
+};
+
+/// Delta starts at 3 sigma of `guess` (a covariance estimate, e.g. the Laplace approximation)
+/// and is re-fitted to 3.5 sigma of the moment-matched result, within the settings' limits.
+PosteriorSamples posterior_samples(const DistanceField& field, const LikelihoodModel& model,
                                    std::span<const Eigen::Vector2d> points,
                                    const slam::Pose2& center, const Eigen::Matrix3d& guess,
-                                   const PosteriorSettings& settings,
-                                   const slam::Pose2& anchor = {});
+                                   const PosteriorSettings& settings);
+
+/// Eqs. (5)-(6) over the candidates moved by `anchor` (pose * anchor; identity: the pose
+/// itself; a loop closure puts its anchor point there). Each candidate stands for its lattice
+/// cell, whose own spread (h^2 / 12 per axis) is added.
+slam::Gaussian2 posterior_gaussian(const PosteriorSamples& samples, const slam::Pose2& anchor = {});
 
 /// Laplace approximation of the posterior covariance from a Gauss-Newton Hessian of
 /// sum_j d^2: T sigma^2 (J^T J)^-1, with unconstrained directions capped by the settings' max.
