@@ -23,21 +23,21 @@ class BestPeaks {
 
   void offer(const SearchResult& c) {
     if (c.score >= threshold()) return;
-    auto near = std::find_if(kept_.begin(), kept_.end(), [&](const SearchResult& k) {
+    // Kept candidates never lie near each other: c enters only if it beats every kept one
+    // near it, and replaces them all.
+    const auto near = [&](const SearchResult& k) {
       return std::abs(k.pose.x - c.pose.x) <= linear_ && std::abs(k.pose.y - c.pose.y) <= linear_ &&
              std::abs(slam::wrap_angle(k.pose.theta - c.pose.theta)) <= angular_;
-    });
-    if (near != kept_.end()) {
-      if (c.score >= near->score) return;
-      *near = c;
-    } else if (kept_.size() < size_) {
-      kept_.push_back(c);
-    } else {
-      kept_.back() = c;
-    }
-    std::stable_sort(kept_.begin(), kept_.end(), [](const SearchResult& a, const SearchResult& b) {
-      return a.score < b.score;
-    });
+    };
+    for (const SearchResult& k : kept_)
+      if (near(k) && k.score <= c.score) return;
+    std::erase_if(kept_, near);
+    if (kept_.size() == size_) kept_.pop_back();
+    kept_.insert(std::upper_bound(kept_.begin(), kept_.end(), c,
+                                  [](const SearchResult& a, const SearchResult& b) {
+                                    return a.score < b.score;
+                                  }),
+                 c);
   }
 
   std::vector<SearchResult> take() { return std::move(kept_); }
@@ -70,7 +70,8 @@ std::vector<SearchResult> correlative_peaks(DistanceField& field,
   const float* cells = field.data();
   const std::int64_t side = 2 * reach + 1;
   std::vector<double> sums(static_cast<std::size_t>(side * side));
-  BestPeaks best(std::max<std::size_t>(1, peaks), 2.0 * res, 2.0 * window.angular_step);
+  // Two lattice steps (and a half, so that rounding never splits a peak) make one peak.
+  BestPeaks best(std::max<std::size_t>(1, peaks), 2.5 * res, 2.5 * window.angular_step);
   const double linear_weight = prior.weight / (prior.linear_std * prior.linear_std);
   const double angular_weight = prior.weight / (prior.angular_std * prior.angular_std);
   for (std::int64_t k = -turns; k <= turns; ++k) {

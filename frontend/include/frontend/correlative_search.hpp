@@ -44,8 +44,8 @@ SearchResult correlative_search(DistanceField& field, std::span<const Eigen::Vec
                                 const slam::Pose2& center, const SearchWindow& window,
                                 const PosePrior& prior = {});
 
-/// The best pose of each of the `peaks` best separate peaks of the score (candidates within two
-/// lattice steps of each other count as one peak), best first.
+/// The best poses of up to `peaks` separate peaks of the score, best first: no two of them lie
+/// within two lattice steps (in x, y and heading) of each other.
 std::vector<SearchResult> correlative_peaks(DistanceField& field,
                                             std::span<const Eigen::Vector2d> points,
                                             const slam::Pose2& center, const SearchWindow& window,
