@@ -59,6 +59,17 @@ void validate(const ScanMatcherSettings& s) {
           "must be positive and ordered");
 }
 
+Points matching_points(const LaserScan& scan, const ScanMatcherSettings& s) {
+  const ScanSurfaces surfaces =
+      scan_surfaces(scan, s.min_range, s.max_match_range, s.surface_incidence);
+  return thin_points(supported_points(surfaces), s.point_spacing);
+}
+
+Points map_points(const LaserScan& scan, const ScanMatcherSettings& s) {
+  const ScanSurfaces surfaces = scan_surfaces(scan, s.min_range, s.max_range, s.surface_incidence);
+  return thin_points(dense_points(surfaces, 0.5 * s.resolution), s.resolution);
+}
+
 ScanMatcher::ScanMatcher(const ScanMatcherSettings& settings) : settings_(settings) {
   validate(settings_);
   start_submap();
@@ -101,8 +112,8 @@ Refinement ScanMatcher::search(const Points& points, const slam::Pose2& center, 
         {1.5 * s.coarse_resolution, 2.0 * s.coarse_angular_step, s.fine_angular_step}, prior);
     if (candidate.score < fine.score) fine = candidate;
   }
-  return refine_pose(map.fine, points, fine.pose, s.refine ? 10 : 0, s.resolution,
-                     s.fine_angular_step);
+  return refine_pose(map.fine, points, fine.pose, s.refine ? 20 : 0, 2.0 * s.resolution,
+                     4.0 * s.fine_angular_step);
 }
 
 MatchResult ScanMatcher::match(const Points& points, const slam::Pose2& prediction) {
@@ -147,10 +158,7 @@ void ScanMatcher::insert(const Points& points, const slam::Pose2& pose) {
 
 MatchResult ScanMatcher::add_scan(const LaserScan& scan) {
   const ScanMatcherSettings& s = settings_;
-  const ScanSurfaces surfaces = scan_surfaces(scan, s.min_range, s.max_range, s.surface_incidence);
-  Points thinned;
-  for (const Eigen::Vector2d& p : thin_points(supported_points(surfaces), s.point_spacing))
-    if (p.squaredNorm() < s.max_match_range * s.max_match_range) thinned.push_back(p);
+  const Points thinned = matching_points(scan, s);
   MatchResult result;
   if (!last_pose_) {
     result.gaussian = slam::Gaussian2(slam::Pose2{}, Eigen::Matrix3d::Identity() * 1e-12);
@@ -175,7 +183,7 @@ MatchResult ScanMatcher::add_scan(const LaserScan& scan) {
   if (travelled_ - submaps_.back().start >= 0.5 * s.local_map_length) start_submap();
   while (submaps_.size() > 1 && travelled_ - submaps_.front().start >= s.local_map_length)
     submaps_.pop_front();
-  insert(thin_points(dense_points(surfaces, 0.5 * s.resolution), s.resolution), result.pose());
+  insert(map_points(scan, s), result.pose());
   last_pose_ = result.pose();
   last_odometry_ = scan.odometry;
   return result;

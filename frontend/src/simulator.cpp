@@ -58,28 +58,29 @@ World corridor_world(double length, double width) {
 
 World loop_world() {
   World w;
-  // Outer wall, counter-clockwise, with door recesses of different widths and depths.
-  w.add_polyline(
-      {V(-1.2, -1.2), V(3, -1.2),    V(3, -1.8),    V(4, -1.8),    V(4, -1.2),   V(9, -1.2),
-       V(9, -2.0),    V(10.5, -2.0), V(10.5, -1.2), V(15, -1.2),   V(15, -1.6),  V(15.8, -1.6),
-       V(15.8, -1.2), V(21.2, -1.2), V(21.2, 5),    V(22.0, 5),    V(22.0, 6.2), V(21.2, 6.2),
-       V(21.2, 15.2), V(17, 15.2),   V(17, 15.9),   V(16, 15.9),   V(16, 15.2),  V(9, 15.2),
-       V(9, 15.6),    V(7, 15.6),    V(7, 15.2),    V(-1.2, 15.2), V(-1.2, 9),   V(-2.1, 9),
-       V(-2.1, 8),    V(-1.2, 8)},
-      true);
+  // Outer wall, counter-clockwise, with door recesses of different widths and depths. The four
+  // corridors differ in width (bottom 2.4 m, right 3.0 m, top 2.0 m, left 2.8 m), as in real
+  // buildings, so that one does not pass for another.
+  w.add_polyline({V(-1.4, -1.2), V(3, -1.2), V(3, -1.8), V(4, -1.8), V(4, -1.2), V(9, -1.2),
+                  V(9, -2.0), V(10.5, -2.0), V(10.5, -1.2), V(15, -1.2), V(15, -1.6),
+                  V(15.8, -1.6), V(15.8, -1.2), V(21.5, -1.2), V(21.5, 5), V(22.3, 5),
+                  V(22.3, 6.2), V(21.5, 6.2), V(21.5, 15.0), V(17, 15.0), V(17, 15.7),
+                  V(16, 15.7), V(16, 15.0), V(9, 15.0), V(9, 15.4), V(7, 15.4), V(7, 15.0),
+                  V(-1.4, 15.0), V(-1.4, 9), V(-2.3, 9), V(-2.3, 8), V(-1.4, 8)},
+                 true);
   // The inner block, with a bay on its right side.
-  w.add_polyline({V(1.2, 1.2), V(18.8, 1.2), V(18.8, 7.5), V(18.2, 7.5), V(18.2, 9.0), V(18.8, 9.0),
-                  V(18.8, 12.8), V(1.2, 12.8)},
+  w.add_polyline({V(1.4, 1.2), V(18.5, 1.2), V(18.5, 7.5), V(17.9, 7.5), V(17.9, 9.0),
+                  V(18.5, 9.0), V(18.5, 13.0), V(1.4, 13.0)},
                  true);
   // Pillars and furniture, placed irregularly.
   w.add_box(V(5.5, 1.45), 0.5, 0.5);
   w.add_box(V(12.0, -0.8), 0.4, 0.8);
-  w.add_box(V(20.6, 2.5), 0.6, 0.3);
-  w.add_box(V(19.3, 11.0), 0.3, 0.3);
-  w.add_box(V(13.0, 14.7), 1.2, 0.4);
-  w.add_box(V(4.0, 13.2), 0.3, 0.3);
-  w.add_box(V(-0.7, 5.0), 0.5, 1.5);
-  w.add_box(V(0.9, 10.5), 0.3, 0.6);
+  w.add_box(V(20.9, 2.5), 0.6, 0.3);
+  w.add_box(V(19.0, 11.0), 0.3, 0.3);
+  w.add_box(V(13.0, 14.6), 1.2, 0.4);
+  w.add_box(V(4.0, 13.3), 0.3, 0.3);
+  w.add_box(V(-0.9, 5.0), 0.5, 1.5);
+  w.add_box(V(1.1, 10.5), 0.3, 0.6);
   return w;
 }
 

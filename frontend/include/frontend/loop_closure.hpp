@@ -27,7 +27,7 @@ struct LoopClosureSettings {
   int levels = 6;                    ///< B&B pyramid levels (top block 2^(levels-1) cells)
   double point_spacing = 0.1;        ///< metres, thinning of the matched fragment's points
   double max_range = 20.0;           ///< metres; longer readings stay out of fragment maps
-  double min_score = 0.55;           ///< mean point likelihood in [0, 1] a closure needs
+  double min_score = 0.6;            ///< mean point likelihood in [0, 1] a closure needs
   double max_second_ratio = 0.9;     ///< reject if a separate peak scores this share of the best
   double exclusion_linear = 1.0;     ///< metres; a "separate" peak lies further than this ...
   double exclusion_angular = 0.3;    ///< ... or turned more than this many radians

@@ -70,6 +70,13 @@ struct MatchResult {
   const slam::Pose2& pose() const { return gaussian.mean(); }
 };
 
+/// The points of a scan that are matched (robot frame): returns on a surface, within
+/// max_match_range, thinned to point_spacing.
+Points matching_points(const LaserScan& scan, const ScanMatcherSettings& settings);
+
+/// The points of a scan that go into the local map (robot frame): its surfaces, densely.
+Points map_points(const LaserScan& scan, const ScanMatcherSettings& settings);
+
 class ScanMatcher {
  public:
   explicit ScanMatcher(const ScanMatcherSettings& settings);
@@ -78,15 +85,14 @@ class ScanMatcher {
   /// frame: its robot pose is the origin.
   MatchResult add_scan(const LaserScan& scan);
 
-  /// The pose and Gaussian of one scan's points (robot frame) against the current local map,
-  /// searching around `prediction`; the map is not changed (apart from growing its grids).
+  /// The pose and Gaussian of a scan's matching points (robot frame) against the current local
+  /// map, searching around `prediction`; the map is not changed (apart from growing its grids).
   MatchResult match(const Points& points, const slam::Pose2& prediction);
 
-  /// Adds points (robot frame) seen from `pose` to the local map.
+  /// Adds map points (robot frame) seen from `pose` to the local map.
   void insert(const Points& points, const slam::Pose2& pose);
 
   const ScanMatcherSettings& settings() const { return settings_; }
-  DistanceField& debug_fine() { return submaps_.front().fine; }
 
  private:
   struct Submap {

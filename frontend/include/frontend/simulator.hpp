@@ -34,8 +34,8 @@ World room_world();
 /// Two parallel walls `length` metres long, `width` apart, open at both ends beyond sensor
 /// reach: along the corridor a scan says nothing.
 World corridor_world(double length = 200.0, double width = 2.0);
-/// A rectangular ring corridor (about 20 m x 14 m on its centre line, 2.4 m wide) around a
-/// block, with door recesses, pillars and an irregular outer wall so that places differ.
+/// A rectangular ring corridor (20 m x 14 m on its centre line; the four sides 2.0 m to 3.0 m
+/// wide) around a block, with door recesses, pillars and a bay so that places differ.
 World loop_world();
 /// The centre line of loop_world's corridor, counter-clockwise from (0, 0), as waypoints.
 std::vector<Eigen::Vector2d> loop_waypoints();
