@@ -40,7 +40,8 @@ struct LoopClosureSettings {
   double overlap_radius = 3.0;       ///< metres; robot poses this close see the same place
   double min_uncertainty = 0.3;      ///< metres (3 sigma); pairs already known better are skipped
   std::size_t max_attempts = 3;      ///< candidate pairs tried per fragment (nearest first)
-  double temperature = 1.0;          ///< divides the closure log-likelihood (docs/frontend.md)
+  double temperature = 15.0;         ///< divides the closure log-likelihood: 1 is honest on
+                                     ///< simulated loops, 15 on real logs (docs/frontend.md)
   PosteriorSettings posterior;       ///< candidate box of eqs. (5)-(6) around H
 };
 

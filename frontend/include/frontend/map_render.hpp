@@ -18,7 +18,7 @@ namespace antslam::frontend {
 
 struct MapRenderSettings {
   double resolution = 0.05;           ///< metres per pixel (paper: 4 cm)
-  double max_range = 30.0;            ///< metres; longer readings and no-returns are not drawn
+  double max_range = 20.0;            ///< metres; longer readings and no-returns are not drawn
   double margin = 1.0;                ///< metres of border around the map
   bool tint_alternate = true;         ///< every second fragment's walls in red (Fig. 4)
   bool draw_frames = true;            ///< draw each fragment frame F_i (= E_{i-1}) as axes
