@@ -13,6 +13,7 @@
 #include <numbers>
 #include <string>
 
+#include "aco/random.hpp"
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
@@ -20,6 +21,7 @@
 #include "frontend/image.hpp"
 #include "frontend/laser_log.hpp"
 #include "frontend/map_render.hpp"
+#include "slamgraph/fragment_set.hpp"
 #include "slamgraph/trajectory.hpp"
 
 namespace antslam::cli {
@@ -37,6 +39,7 @@ struct FrontendOptions {
   std::optional<double> fov_degrees, first_beam_degrees;
   std::string alignment = "accumulated";
   bool no_closures = false;
+  std::size_t average_samples = 0;
   fe::MapRenderSettings map;
 };
 
@@ -115,6 +118,22 @@ json report_json(const FrontendOptions& o, const fe::LaserLog& log, const fe::Fr
       {"times", times}};
 }
 
+/// The average map over `count` random sample sequences (one sample of eq. (7) per fragment,
+/// placed by eq. (8)): the spread of maps the optimizer chooses from, drawn like Fig. 5b.
+fe::Image sample_average(const fe::LaserLog& log, const fe::FrontendResult& r, std::size_t count,
+                         std::uint64_t seed, const fe::MapRenderSettings& settings) {
+  const slam::FragmentSet& set = r.fragment_set;
+  const std::size_t samples = set.fragments.size() > 1 ? set.fragments[1].samples.size() : 0;
+  std::vector<std::vector<slam::Pose2>> trials;
+  aco::Rng rng(aco::mix_seed(seed, 0xA7E5));
+  for (std::size_t t = 0; t < count; ++t) {
+    std::vector<std::uint32_t> choice(set.layer_count());
+    for (std::uint32_t& c : choice) c = rng.below(static_cast<std::uint32_t>(samples));
+    trials.push_back(slam::world_frames(set, choice));
+  }
+  return fe::render_average_map(log, fe::map_layout(r), trials, settings);
+}
+
 void run(FrontendOptions o) {
   const auto start = std::chrono::steady_clock::now();
   if (o.fov_degrees) o.sensor.field_of_view = *o.fov_degrees * std::numbers::pi / 180.0;
@@ -144,12 +163,19 @@ void run(FrontendOptions o) {
   const fe::Image map =
       fe::render_map(log, fe::map_layout(result), fe::scan_matcher_frames(result), o.map);
   const std::string png = fe::encode_png(map);
+  std::string average_png;
+  if (o.average_samples > 0 && result.fragments.size() > 1) {
+    progress.update("frontend: averaging maps of random sample sequences", true);
+    average_png = fe::encode_png(
+        sample_average(log, result, o.average_samples, o.settings.fragmentation.seed, o.map));
+  }
   const double map_seconds = seconds_since(drawing);
   progress.clear();
 
   write_atomically(o.out / "trajectory.tum",
                    [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
   write_atomically(o.out / "map.png", png);
+  if (!average_png.empty()) write_atomically(o.out / "map-samples.png", average_png);
   const json times = {
       {"read_s", read_seconds},
       {"scan_matching_s", result.stats.matching_seconds},
@@ -218,6 +244,9 @@ void add_frontend_command(CLI::App& app) {
                   "reject a closure if a separate peak scores this share of the best")
       ->capture_default_str();
   sub->add_option("--resolution", o.map.resolution, "map cell size, metres")->capture_default_str();
+  sub->add_option("--average-samples", o.average_samples,
+                  "also write map-samples.png: the average map of this many random sample "
+                  "sequences (eqs. 7-8)");
   sub->callback([options] { run(*options); });
 }
 

@@ -15,6 +15,9 @@ namespace {
 /// chi^2 with 2 degrees of freedom at 99 %: the ellipse of the paper's detection test.
 constexpr double kEllipse = 9.21;
 
+/// Fragment maps kept for reuse.
+constexpr std::size_t kCachedMaps = 8;
+
 }  // namespace
 
 LoopCloser::LoopCloser(const LoopClosureSettings& settings) : settings_(settings) {
@@ -71,6 +74,15 @@ std::vector<LoopCloser::Candidate> LoopCloser::candidates(std::size_t b,
     return x.mahalanobis < y.mahalanobis;
   });
   return out;
+}
+
+const FragmentMap& LoopCloser::target(std::size_t a) {
+  const auto hit = std::find_if(cache_.begin(), cache_.end(),
+                                [a](const auto& entry) { return entry.first == a; });
+  if (hit != cache_.end()) return *hit->second;
+  cache_.emplace_front(a, std::make_unique<FragmentMap>(map_[a], settings_));
+  if (cache_.size() > kCachedMaps) cache_.pop_back();
+  return *cache_.front().second;
 }
 
 void LoopCloser::close(std::size_t b, const Fragmenter& fragmenter) {

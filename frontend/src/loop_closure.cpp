@@ -82,17 +82,15 @@ ClosureMatch match_fragments(const FragmentMap& target, const Points& points,
   const SearchBox box{prior, half(0, s.min_window_linear, s.max_window_linear),
                       half(1, s.min_window_linear, s.max_window_linear),
                       half(2, s.min_window_angular, s.max_window_angular), step};
-  const std::optional<ScoredPose> best = branch_and_bound(target.pyramid(), points, box, 0.0);
+  // Only poses that could be accepted are searched for: the bound prunes far more.
+  const std::optional<ScoredPose> best =
+      branch_and_bound(target.pyramid(), points, box, s.min_score);
   if (!best) {
-    out.reason = "no overlap in the search window";
+    out.reason = format("no pose in the window scores %.3f", s.min_score);
     return out;
   }
   out.score = best->score;
   out.pose = best->pose;
-  if (best->score < s.min_score) {
-    out.reason = format("score %.3f below %.3f", best->score, s.min_score);
-    return out;
-  }
   // A separate peak almost as good: the place is ambiguous (corridor, repeated rooms).
   const std::optional<ScoredPose> second =
       branch_and_bound(target.pyramid(), points, box, s.max_second_ratio * best->score,

@@ -25,6 +25,14 @@ class LikelihoodPyramid {
     return static_cast<std::int64_t>(std::floor(v / resolution_ + 0.5));
   }
 
+  /// The grid of one level: values at (x - x0, y - y0) row-major with `width` columns; the
+  /// covered cells are the same for every level.
+  const float* level(int h) const { return grids_[static_cast<std::size_t>(h)].data(); }
+  std::int64_t x0() const { return x0_; }
+  std::int64_t y0() const { return y0_; }
+  std::int64_t width() const { return width_; }
+  std::int64_t height() const { return height_; }
+
   /// Level-h value of the window starting at lattice cell (x, y); 0 where no map is.
   float at(int level, std::int64_t x, std::int64_t y) const {
     if (x < x0_ || y < y0_ || x >= x0_ + width_ || y >= y0_ + height_) return 0.0F;

@@ -7,7 +7,9 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <deque>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "frontend/fragmenter.hpp"
@@ -50,6 +52,8 @@ class LoopCloser {
   };
   std::vector<Candidate> candidates(std::size_t b, const Fragmenter& fragmenter) const;
   std::vector<GraphEdge> edges(std::size_t b, const Fragmenter& fragmenter) const;
+  /// The map of fragment a, from a small cache (neighbouring fragments try the same targets).
+  const FragmentMap& target(std::size_t a);
 
   LoopClosureSettings settings_;
   std::vector<Points> matched_;  ///< per fragment, thinned
@@ -57,6 +61,7 @@ class LoopCloser {
   std::vector<slam::LoopClosure> closures_;
   std::vector<GraphEdge> closure_edges_;
   std::vector<ClosureAttempt> attempts_;
+  std::deque<std::pair<std::size_t, std::unique_ptr<FragmentMap>>> cache_;  ///< newest first
 };
 
 }  // namespace antslam::frontend
