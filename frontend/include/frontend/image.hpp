@@ -10,7 +10,7 @@
 namespace antslam::frontend {
 
 struct Rgb {
-  std::uint8_t r = 0, g = 0, b = 0;
+  std::uint8_t r = 0, g = 0, b = 0;  ///< 0-255 intensities of red, green and blue
   bool operator==(const Rgb&) const = default;
 };
 

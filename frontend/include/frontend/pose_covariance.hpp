@@ -11,7 +11,7 @@
 namespace antslam::frontend {
 
 struct WeightedPose {
-  slam::Pose2 pose;
+  slam::Pose2 pose;         ///< a candidate pose x_k
   double log_weight = 0.0;  ///< log p(z | m, x), up to a constant
 };
 

@@ -23,7 +23,7 @@ struct GraphEdge {
 };
 
 struct RelativeEstimate {
-  bool reachable = false;
+  bool reachable = false;                                ///< a path to the target exists
   slam::Pose2 pose;                                      ///< F_target in F_node
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of `pose` (F_node axes)
 };
