@@ -120,7 +120,7 @@ MatchResult ScanMatcher::match(const Points& points, const slam::Pose2& predicti
   const ScanMatcherSettings& s = settings_;
   const DistanceField& fine = submaps_.front().fine;
   Refinement best = search(points, prediction, s.linear_window, s.angular_window);
-  double fit = inlier_fraction(fine, points, best.pose, s.inlier_distance);
+  const double fit = inlier_fraction(fine, points, best.pose, s.inlier_distance);
   bool recovered = false;
   if (fit < s.recovery_fraction) {
     // A poor fit: the odometry may have failed (a stall, a jump); search a wide window.
@@ -129,7 +129,6 @@ MatchResult ScanMatcher::match(const Points& points, const slam::Pose2& predicti
     const double wide_fit = inlier_fraction(fine, points, wide.pose, s.inlier_distance);
     if (wide_fit >= fit + s.recovery_gain) {
       best = wide;
-      fit = wide_fit;
       recovered = true;
     }
   }

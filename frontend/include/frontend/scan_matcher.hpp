@@ -8,8 +8,9 @@
 // goes into the live submaps; a scan is matched against the oldest live submap, which holds
 // between half and all of the last `local_map_length` metres, and submaps older than that are
 // dropped (Cartographer's scheme). Matching: exhaustive correlative search on the coarse field
-// over the search window, then on the fine field within one coarse cell, then Gauss-Newton on
-// the interpolated fine field, then eqs. (5)-(6).
+// over the search window; around each of the best few coarse peaks, the same on the fine field;
+// Levenberg-Marquardt on the interpolated fine field from the best; then eqs. (5)-(6). A poor
+// fit (odometry stall or jump) triggers a search of a wide recovery window.
 
 #include <cstddef>
 #include <deque>
