@@ -6,6 +6,7 @@
 namespace antslam::cli {
 
 // void add_<name>_command(CLI::App& app);  -- one per subcommand, defined in <name>_command.cpp
+void add_eval_command(CLI::App& app);
 void add_frontend_command(CLI::App& app);
 
 }  // namespace antslam::cli
