@@ -10,5 +10,6 @@ void add_eval_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_g2o_command(CLI::App& app);
+void add_frontend_command(CLI::App& app);
 
 }  // namespace antslam::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   antslam::cli::add_optimize_command(app);
   antslam::cli::add_synth_command(app);
   antslam::cli::add_g2o_command(app);
+  antslam::cli::add_frontend_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
