@@ -75,7 +75,7 @@ TEST(Fragmenter, AlignmentGaussiansAndSamples) {
   EXPECT_LT((f.exit_covariance(0) - 2.0 * c).norm(), 1e-15);
 
   const slam::FragmentSet set = f.fragment_set("arc");
-  EXPECT_NO_THROW(slam::validate(slam::FragmentSet{set.name, set.fragments, {{0, 3, {}, {}}}}));
+  EXPECT_NO_THROW(slam::validate(slam::FragmentSet{set.name, set.fragments, {{0, 3, {}, {}}}, {}}));
   ASSERT_EQ(set.fragments.size(), 4U);
   EXPECT_FALSE(set.fragments[0].alignment.has_value());
   EXPECT_TRUE(set.fragments[0].samples.empty());
