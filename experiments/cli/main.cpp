@@ -11,6 +11,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
   app.require_subcommand(1);
+  antslam::cli::add_tsp_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

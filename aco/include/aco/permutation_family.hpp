@@ -3,7 +3,8 @@
 // repeatedly picks, with the construction rule, among the unvisited nodes of its current node's
 // candidate list; when all candidates are visited it moves to the nearest unvisited node (as
 // ACOTSP's neighbour_choose_and_move_to_next, with distance as the fallback criterion). So a
-// tour costs O(n k) plus the rare fallbacks.
+// tour costs O(n k) plus the fallbacks, each an O(n) scan -- or, for problems that offer one
+// (PermutationProblemWithNearestSearch), an exact search that is about O(1) per fallback.
 
 #include <cmath>
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "aco/edge_trail.hpp"
@@ -19,6 +21,18 @@
 #include "aco/update_context.hpp"
 
 namespace antslam::aco {
+
+namespace detail {
+struct NoNearestSearch {};
+template <class P>
+struct NearestSearchOf {
+  using type = NoNearestSearch;
+};
+template <PermutationProblemWithNearestSearch P>
+struct NearestSearchOf<P> {
+  using type = decltype(std::declval<const P&>().make_nearest_search());
+};
+}  // namespace detail
 
 template <PermutationProblem P>
 class PermutationFamily {
@@ -60,6 +74,7 @@ class PermutationFamily {
       s.slot.resize(n_);
       s.weight.resize(k_);
       s.node.resize(k_);
+      if constexpr (kHasNearestSearch) s.search = problem_->make_nearest_search();
     }
   }
 
@@ -73,6 +88,7 @@ class PermutationFamily {
     s.visited.assign(n_, 0);
     s.unvisited.resize(n_);
     s.slot.resize(n_);
+    if constexpr (kHasNearestSearch) s.search = problem_->make_nearest_search();
     std::vector<std::uint32_t> tour;
     begin(s, tour, 0);
     for (std::uint32_t step = 1; step < n_; ++step) {
@@ -129,14 +145,17 @@ class PermutationFamily {
 
  private:
   static constexpr std::uint32_t kNone = EdgeTrail::kNone;
+  static constexpr bool kHasNearestSearch = PermutationProblemWithNearestSearch<P>;
+  using NearestSearch = typename detail::NearestSearchOf<P>::type;
 
   struct Scratch {
     std::vector<std::uint8_t> visited;
     std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes
     std::vector<std::uint32_t> slot;       // position of a node in `unvisited`
     std::uint32_t remaining = 0;
-    std::vector<double> weight;       // weights of the feasible candidates
-    std::vector<std::uint32_t> node;  // the feasible candidates
+    std::vector<double> weight;                  // weights of the feasible candidates
+    std::vector<std::uint32_t> node;             // the feasible candidates
+    [[no_unique_address]] NearestSearch search;  // the problem's fallback search, if any
   };
 
   double heuristic(std::uint32_t i, std::uint32_t j) const {
@@ -155,6 +174,7 @@ class PermutationFamily {
     std::fill(s.visited.begin(), s.visited.end(), 0);
     for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
     s.remaining = n_;
+    if constexpr (kHasNearestSearch) s.search.reset();
     tour.clear();
     tour.reserve(n_);
     visit(s, tour, start);
@@ -166,6 +186,7 @@ class PermutationFamily {
     const std::uint32_t last = s.unvisited[--s.remaining];
     s.unvisited[s.slot[node]] = last;
     s.slot[last] = s.slot[node];
+    if constexpr (kHasNearestSearch) s.search.remove(node);
   }
 
   template <class Rule>
@@ -185,17 +206,21 @@ class PermutationFamily {
 
   /// Fallback when every candidate is visited: the nearest unvisited node (lowest id on ties).
   std::uint32_t nearest_unvisited(const Scratch& s, std::uint32_t current) const {
-    std::uint32_t best = kNone;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (std::uint32_t r = 0; r < s.remaining; ++r) {
-      const std::uint32_t j = s.unvisited[r];
-      const auto d = static_cast<double>(problem_->distance(current, j));
-      if (d < best_d || (d == best_d && j < best)) {
-        best_d = d;
-        best = j;
+    if constexpr (kHasNearestSearch) {
+      return s.search.nearest(current);
+    } else {
+      std::uint32_t best = kNone;
+      double best_d = std::numeric_limits<double>::infinity();
+      for (std::uint32_t r = 0; r < s.remaining; ++r) {
+        const std::uint32_t j = s.unvisited[r];
+        const auto d = static_cast<double>(problem_->distance(current, j));
+        if (d < best_d || (d == best_d && j < best)) {
+          best_d = d;
+          best = j;
+        }
       }
+      return best;
     }
-    return best;
   }
 
   const P* problem_;

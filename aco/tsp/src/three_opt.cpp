@@ -1,0 +1,118 @@
+// Sequential 3-opt step (see moves.hpp for the notation). With t2 following t1, the exchange
+// remove (t1, t2), add (t2, t3) leaves a Hamiltonian path plus a cycle, and t4 decides which:
+//
+//   t4 before t3  the 2-opt case: closing with (t4, t1) is a valid 2-opt move; otherwise add
+//                 (t4, t5) and remove the one edge (t5, t6) that keeps a Hamiltonian path
+//                 (t6 on the side of t5 facing t4), then close with (t6, t1).
+//   t4 after t3   the path t2..t3 became a cycle; (t4, t5) must re-enter it (t5 between t2 and
+//                 t3) and either of t5's cycle edges may go: t6 after t5 moves the segment
+//                 t6..t3 in front of t2..t5 unreversed (the Or-opt move), t6 before t5
+//                 reverses both segments.
+//
+// Every case is applied as two or three 2-opt moves, each a reversal of the shorter side.
+
+#include "moves.hpp"
+
+namespace antslam::tsp::detail {
+
+namespace {
+
+struct Step {
+  const TspProblem& problem;
+  ArrayTour& tour;
+  std::size_t k;
+  Touched& touched;
+  std::uint32_t t1 = 0, t2 = 0, t3 = 0;
+  double g1 = 0.0;
+  bool forward = true;
+
+  double d(std::uint32_t a, std::uint32_t b) const { return problem.distance(a, b); }
+
+  /// t4 = predecessor of t3.
+  bool two_opt_side() {
+    const std::uint32_t t4 = tour.next(t3, !forward);
+    const double g1_open = g1 + d(t3, t4);  // gain with (t3, t4) removed, before closing
+    if (g1_open - d(t4, t1) > 0.0) {
+      tour.two_opt_move(t1, t2, t4, t3);
+      touched.set({t1, t2, t3, t4});
+      return true;
+    }
+    const auto near = problem.neighbours(t4);
+    const auto near_d = problem.neighbour_distances(t4);
+    for (std::size_t r = 0; r < k; ++r) {
+      const double g2 = g1_open - near_d[r];
+      if (g2 <= 0.0) break;
+      const std::uint32_t t5 = near[r];
+      if (t5 == t3 || t5 == t1) continue;
+      // t5 on the reversed part t2..t4: its neighbour towards t4 is its successor; on t3..t1 it
+      // is its predecessor.
+      const bool reversed_part = tour.between(t2, t5, t4, forward);
+      const std::uint32_t t6 = tour.next(t5, reversed_part ? forward : !forward);
+      if (t6 == t4) continue;
+      if (g2 + d(t5, t6) - d(t6, t1) <= 0.0) continue;
+      tour.two_opt_move(t1, t2, t4, t3);  // t1 t4 .. t2 t3 .. (closing edge (t1, t4) for now)
+      tour.two_opt_move(t4, t1, t5, t6);  // replaces (t1, t4), (t6, t5) by (t4, t5), (t1, t6)
+      touched.set({t1, t2, t3, t4, t5, t6});
+      return true;
+    }
+    return false;
+  }
+
+  /// t4 = successor of t3.
+  bool cycle_side() {
+    const std::uint32_t t4 = tour.next(t3, forward);
+    if (t4 == t1) return false;
+    const double g1_open = g1 + d(t3, t4);
+    const auto near = problem.neighbours(t4);
+    const auto near_d = problem.neighbour_distances(t4);
+    for (std::size_t r = 0; r < k; ++r) {
+      const double g2 = g1_open - near_d[r];
+      if (g2 <= 0.0) break;
+      const std::uint32_t t5 = near[r];
+      if (t5 == t3 || !tour.between(t2, t5, t3, forward)) continue;
+      const std::uint32_t after = tour.next(t5, forward);
+      if (g2 + d(t5, after) - d(after, t1) > 0.0) {  // Or-opt: t1 [t6..t3] [t2..t5] t4
+        tour.two_opt_move(t1, t2, t3, t4);           // t1 t3..t6 t5..t2 t4
+        tour.two_opt_move(t1, t3, after, t5);        // t1 t6..t3 t5..t2 t4
+        tour.two_opt_move(t3, t5, t2, t4);           // t1 t6..t3 t2..t5 t4
+        touched.set({t1, t2, t3, t4, t5, after});
+        return true;
+      }
+      if (t5 == t2) continue;
+      const std::uint32_t before = tour.next(t5, !forward);
+      if (g2 + d(t5, before) - d(before, t1) > 0.0) {  // t1 [t6..t2] [t3..t5] t4
+        tour.two_opt_move(t1, t2, before, t5);         // t1 t6..t2 t5..t3 t4
+        tour.two_opt_move(t2, t5, t3, t4);             // t1 t6..t2 t3..t5 t4
+        touched.set({t1, t2, t3, t4, t5, before});
+        return true;
+      }
+    }
+    return false;
+  }
+};
+
+}  // namespace
+
+bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+                    Touched& touched) {
+  Step step{problem, tour, k, touched};
+  step.t1 = t1;
+  for (const bool forward : {true, false}) {
+    step.forward = forward;
+    step.t2 = tour.next(t1, forward);
+    const double d12 = problem.distance(t1, step.t2);
+    const std::uint32_t t2_next = tour.next(step.t2, forward);
+    const auto near = problem.neighbours(step.t2);
+    const auto near_d = problem.neighbour_distances(step.t2);
+    for (std::size_t r = 0; r < k; ++r) {
+      step.g1 = d12 - near_d[r];
+      if (step.g1 <= 0.0) break;
+      step.t3 = near[r];
+      if (step.t3 == t1 || step.t3 == t2_next) continue;
+      if (step.two_opt_side() || step.cycle_side()) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace antslam::tsp::detail

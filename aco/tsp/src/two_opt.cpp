@@ -1,0 +1,71 @@
+// 2-opt and 2.5-opt steps (see moves.hpp for the notation).
+
+#include "moves.hpp"
+
+namespace antslam::tsp::detail {
+
+namespace {
+
+/// The 2-opt closing of remove (t1, t2), add (t2, t3): remove (t4, t3) with t4 the
+/// predecessor of t3, add (t4, t1). Applies it if it gains.
+bool try_two_opt(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::uint32_t t2,
+                 std::uint32_t t3, double g1, bool forward, Touched& touched) {
+  const std::uint32_t t4 = tour.next(t3, !forward);
+  if (t4 == t2) return false;  // t3 follows t2: nothing to exchange
+  if (g1 + problem.distance(t3, t4) - problem.distance(t4, t1) <= 0.0) return false;
+  tour.two_opt_move(t1, t2, t4, t3);
+  touched.set({t1, t2, t3, t4});
+  return true;
+}
+
+}  // namespace
+
+bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+                  Touched& touched) {
+  for (const bool forward : {true, false}) {
+    const std::uint32_t t2 = tour.next(t1, forward);
+    const double d12 = problem.distance(t1, t2);
+    const auto near = problem.neighbours(t2);
+    const auto near_d = problem.neighbour_distances(t2);
+    for (std::size_t r = 0; r < k; ++r) {
+      const double g1 = d12 - near_d[r];
+      if (g1 <= 0.0) break;  // lists are sorted: no later neighbour gains either
+      if (near[r] != t1 && try_two_opt(problem, tour, t1, t2, near[r], g1, forward, touched))
+        return true;
+    }
+  }
+  return false;
+}
+
+bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+                       Touched& touched) {
+  for (const bool forward : {true, false}) {
+    const std::uint32_t t2 = tour.next(t1, forward);
+    const std::uint32_t t2_next = tour.next(t2, forward);
+    const double d12 = problem.distance(t1, t2);
+    // Gain of taking t2 out of the tour and joining its neighbours.
+    const double removal = d12 + problem.distance(t2, t2_next) - problem.distance(t1, t2_next);
+    const auto near = problem.neighbours(t2);
+    const auto near_d = problem.neighbour_distances(t2);
+    for (std::size_t r = 0; r < k; ++r) {
+      const double g1 = d12 - near_d[r];
+      if (g1 <= 0.0) break;
+      const std::uint32_t t3 = near[r];
+      if (t3 == t1) continue;
+      if (try_two_opt(problem, tour, t1, t2, t3, g1, forward, touched)) return true;
+      // Node insertion: put t2 between t3 and one of its tour neighbours u.
+      for (const bool side : {true, false}) {
+        const std::uint32_t u = tour.next(t3, side);
+        if (u == t2) continue;
+        const double insertion = near_d[r] + problem.distance(t2, u) - problem.distance(t3, u);
+        if (removal - insertion <= 0.0) continue;
+        tour.move_city(t2, t3, u);
+        touched.set({t1, t2, t2_next, t3, u});
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace antslam::tsp::detail
