@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
   app.require_subcommand(1);
   antslam::cli::add_tsp_command(app);
+  antslam::cli::add_tsp_experiment_command(app);
+  antslam::cli::add_tsp_generate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -140,7 +140,7 @@ void add_tsp_command(CLI::App& app) {
   auto command = std::make_shared<TspCommand>();
   CLI::App* sub = app.add_subcommand("tsp", "Solve a TSPLIB instance with an ACO variant");
   sub->add_option("--instance", command->instance, "TSPLIB .tsp file")->required();
-  add_tsp_options(*sub, command->algorithm);
+  add_tsp_options(*sub, command->algorithm, true);
   sub->add_option("--iterations", command->iterations, "iteration budget (0: none)");
   sub->add_option("--time", command->time_s, "wall-clock budget in seconds (0: none)")
       ->check(finite_in(0.0, 1e9));

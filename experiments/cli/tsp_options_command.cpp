@@ -31,12 +31,13 @@ CLI::Validator finite_in(double lo, double hi) {
       description.str());
 }
 
-void add_tsp_options(CLI::App& command, TspOptions& o) {
+void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   constexpr double kBig = std::numeric_limits<double>::max();
   aco::Parameters& p = o.solver.aco;
-  command.add_option("--variant", o.variant, "ACO variant")
-      ->check(CLI::IsMember({"as", "eas", "ras", "acs", "mmas", "hybrid"}))
-      ->capture_default_str();
+  if (single_run)
+    command.add_option("--variant", o.variant, "ACO variant")
+        ->check(CLI::IsMember({"as", "eas", "ras", "acs", "mmas", "hybrid"}))
+        ->capture_default_str();
   command.add_option("--local-search", o.local_search, "local search applied to the ants' tours")
       ->check(CLI::IsMember({"none", "2opt", "2.5opt", "3opt"}))
       ->capture_default_str();
@@ -44,6 +45,12 @@ void add_tsp_options(CLI::App& command, TspOptions& o) {
       .add_option("--neighbours", o.problem.ls_neighbours,
                   "nearest neighbours the local search tries per city")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
+      ->capture_default_str();
+  command
+      .add_option("--ls-start", o.ls_start,
+                  "cities local search starts from: those with an edge not in the ant's "
+                  "previous local optimum, or all (ACOTSP)")
+      ->check(CLI::IsMember({"changed", "all"}))
       ->capture_default_str();
   command
       .add_option("--candidates", o.problem.candidates,
@@ -60,10 +67,12 @@ void add_tsp_options(CLI::App& command, TspOptions& o) {
       ->capture_default_str();
   command.add_option("--ants", p.ants, "ants per iteration (0: variant default)")
       ->capture_default_str();
-  command.add_option("--seed", p.seed, "seed of every random choice")->capture_default_str();
-  command.add_option("--threads", o.threads, "threads building ants")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
-      ->capture_default_str();
+  if (single_run) {
+    command.add_option("--seed", p.seed, "seed of every random choice")->capture_default_str();
+    command.add_option("--threads", o.threads, "threads building ants")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
+        ->capture_default_str();
+  }
   command
       .add_option("--backend", o.backend, "parallel backend (auto: serial on 1 thread, else omp)")
       ->check(CLI::IsMember({"auto", "serial", "omp", "tbb"}))
@@ -124,6 +133,7 @@ tsp::SolverSettings solver_settings(const TspOptions& o) {
   if (!kind) throw std::invalid_argument("--local-search: unknown '" + o.local_search + "'");
   s.local_search.kind = *kind;
   s.local_search.neighbours = o.problem.ls_neighbours;
+  s.local_search.queue_changed_only = o.ls_start == "changed";
   if (s.aco.tau_init > s.aco.tau_max)
     throw std::invalid_argument("--tau-init must not exceed --tau-max");
   return s;

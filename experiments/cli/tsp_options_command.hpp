@@ -16,14 +16,16 @@ namespace antslam::cli {
 struct TspOptions {
   std::string variant = "mmas";       ///< as, eas, ras, acs, mmas, hybrid
   std::string local_search = "3opt";  ///< none, 2opt, 2.5opt, 3opt
-  std::string backend = "auto";       ///< auto (serial on 1 thread, else omp), serial, omp, tbb
-  std::size_t threads = 1;            ///< threads building ants
-  tsp::ProblemSettings problem;       ///< candidate and neighbour lists, matrix limit
-  tsp::SolverSettings solver;         ///< engine parameters (variant/local search set from names)
+  std::string ls_start = "changed";  ///< changed: queue cities whose edges changed; all: every city
+  std::string backend = "auto";      ///< auto (serial on 1 thread, else omp), serial, omp, tbb
+  std::size_t threads = 1;           ///< threads building ants
+  tsp::ProblemSettings problem;      ///< candidate and neighbour lists, matrix limit
+  tsp::SolverSettings solver;        ///< engine parameters (variant/local search set from names)
 };
 
-/// Registers the options on `command`; values land in `options`.
-void add_tsp_options(CLI::App& command, TspOptions& options);
+/// Registers the options on `command`; values land in `options`. Without `single_run`,
+/// --variant, --seed and --threads are left to the caller (experiments sweep them).
+void add_tsp_options(CLI::App& command, TspOptions& options, bool single_run);
 
 /// Checks the names and fills options.solver's variant and local search; throws
 /// std::invalid_argument naming the option on a bad value.

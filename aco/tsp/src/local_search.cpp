@@ -45,14 +45,26 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
                     : settings_.kind == LocalSearchKind::two_half_opt ? &detail::two_half_opt_step
                                                                       : &detail::three_opt_step;
   w.tour.assign(tour);
-  // Don't-look bits: every city starts active, in random order (ACOTSP's random permutation).
+  // Don't-look bits: the active cities in random order (ACOTSP's random permutation).
+  const bool changed_only = settings_.queue_changed_only && w.previous.size() == n;
+  if (changed_only) {
+    std::fill(w.queued.begin(), w.queued.end(), 0);
+    for (std::uint32_t c = 0; c < n; ++c) {
+      const std::uint32_t s = w.tour.succ(c);
+      if (w.previous.succ(c) != s && w.previous.pred(c) != s) w.queued[c] = w.queued[s] = 1;
+    }
+  } else {
+    std::fill(w.queued.begin(), w.queued.end(), 1);
+  }
+  std::uint32_t count = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint32_t j = rng.below(i + 1);
     w.queue[i] = w.queue[j];
     w.queue[j] = i;
   }
-  std::fill(w.queued.begin(), w.queued.end(), 1);
-  std::uint32_t head = 0, count = n;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (w.queued[w.queue[i]]) w.queue[count++] = w.queue[i];
+  std::uint32_t head = 0;
   detail::Touched touched;
   while (count > 0) {
     if ((++w.stats.examined & 63U) == 0 && stop.expired()) {
@@ -77,6 +89,7 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
   }
   const auto cities = w.tour.cities();
   tour.assign(cities.begin(), cities.end());
+  std::swap(w.tour, w.previous);
 }
 
 }  // namespace antslam::tsp

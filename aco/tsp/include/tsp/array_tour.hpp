@@ -67,7 +67,7 @@ class ArrayTour {
 
   /// Reverses the forward path from city a to city b (inclusive); the tour is the same cycle
   /// whichever side is reversed, so the shorter side is.
-  void reverse_path(std::uint32_t a, std::uint32_t b) {
+  [[gnu::noinline]] void reverse_path(std::uint32_t a, std::uint32_t b) {
     std::uint32_t i = position_[a];
     std::uint32_t j = position_[b];
     std::uint32_t length = distance_forward(i, j) + 1;

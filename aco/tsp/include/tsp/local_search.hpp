@@ -33,10 +33,13 @@ std::string_view to_string(LocalSearchKind kind);
 std::optional<LocalSearchKind> parse_local_search(std::string_view name);
 
 struct LocalSearchSettings {
-  LocalSearchKind kind =
-      LocalSearchKind::three_opt;  ///< neighbourhood (none: leave tours as built)
-  std::size_t neighbours =
-      20;  ///< nearest neighbours tried per city (capped by the problem's lists)
+  /// Neighbourhood (none: leave tours as built).
+  LocalSearchKind kind = LocalSearchKind::three_opt;
+  /// Nearest neighbours tried per city (capped by the problem's lists).
+  std::size_t neighbours = 20;
+  /// Start with only the cities that have a tour edge not in the tour this workspace last
+  /// returned (the same ant's previous local optimum); false: every city, as ACOTSP.
+  bool queue_changed_only = true;
 };
 
 /// What one improve() call did (for tests and benchmarks).
@@ -50,6 +53,7 @@ class TourLocalSearch {
  public:
   struct Workspace {
     ArrayTour tour;
+    ArrayTour previous;                // the last local optimum returned (empty at first)
     std::vector<std::uint32_t> queue;  // circular FIFO of cities whose don't-look bit is off
     std::vector<std::uint8_t> queued;
     LocalSearchStats stats;  // of the last improve() call
