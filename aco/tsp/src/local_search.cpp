@@ -38,7 +38,7 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
                               Workspace& w, aco::Rng& rng, const aco::StopToken& stop) const {
   w.stats = {};
   const auto n = static_cast<std::uint32_t>(problem.size());
-  if (settings_.kind == LocalSearchKind::none || tour.size() < 5) return;
+  if (settings_.kind == LocalSearchKind::none || tour.size() < 4) return;  // n = 3: one tour
   if (tour.size() != n) throw std::invalid_argument("local search: tour size differs from n");
   const std::size_t k = std::min(settings_.neighbours, problem.neighbours(0).size());
   const auto step = settings_.kind == LocalSearchKind::two_opt        ? &detail::two_opt_step
