@@ -234,6 +234,36 @@ TEST(LocalSearch, StartsFromChangedCitiesOnly) {
   EXPECT_GE(workspace.stats.examined, 6U);
 }
 
+TEST(ArrayTour, ReversalsKeepPositionsAndEdgeLengthsConsistent) {
+  for (std::size_t n : {5U, 6U, 31U}) {
+    const TspProblem problem(testing::random_instance(n, 77, EdgeWeightType::euc_2d));
+    aco::Rng rng(n);
+    ArrayTour tour;
+    tour.assign(testing::random_tour(n, rng), problem);
+    for (int step = 0; step < 500; ++step) {
+      const auto a = rng.below(static_cast<std::uint32_t>(n));
+      const auto b = rng.below(static_cast<std::uint32_t>(n));
+      std::vector<std::uint32_t> expected;  // the cycle with the path a..b reversed
+      const auto cities = tour.cities();
+      const std::size_t pa = tour.position(a), pb = tour.position(b);
+      const std::size_t len = (pb + n - pa) % n + 1;
+      for (std::size_t s = 0; s < len; ++s) expected.push_back(cities[(pb + n - s) % n]);
+      for (std::size_t s = len; s < n; ++s) expected.push_back(cities[(pa + s) % n]);
+      tour.reverse_path(a, b);
+      // Same cycle as `expected`, in either orientation, from any start.
+      const std::uint32_t first = expected[0];
+      const bool forward = tour.succ(first) == expected[1];
+      std::uint32_t c = first;
+      for (std::size_t s = 0; s < n; ++s, c = tour.next(c, forward)) ASSERT_EQ(c, expected[s]);
+      for (std::uint32_t x = 0; x < n; ++x) {
+        ASSERT_EQ(tour.cities()[tour.position(x)], x);
+        ASSERT_EQ(tour.next_length(x, true), problem.distance(x, tour.succ(x)));
+        ASSERT_EQ(tour.next_length(x, false), problem.distance(x, tour.pred(x)));
+      }
+    }
+  }
+}
+
 TEST(LocalSearch, NamesRoundTrip) {
   for (LocalSearchKind k : {LocalSearchKind::none, LocalSearchKind::two_opt,
                             LocalSearchKind::two_half_opt, LocalSearchKind::three_opt})

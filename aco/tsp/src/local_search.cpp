@@ -44,7 +44,7 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
   const auto step = settings_.kind == LocalSearchKind::two_opt        ? &detail::two_opt_step
                     : settings_.kind == LocalSearchKind::two_half_opt ? &detail::two_half_opt_step
                                                                       : &detail::three_opt_step;
-  w.tour.assign(tour);
+  w.tour.assign(tour, problem);
   // Don't-look bits: the active cities in random order (ACOTSP's random permutation).
   const bool changed_only = settings_.queue_changed_only && w.previous.size() == n;
   if (changed_only) {

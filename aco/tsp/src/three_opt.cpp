@@ -31,8 +31,8 @@ struct Step {
   /// t4 = predecessor of t3.
   bool two_opt_side() {
     const std::uint32_t t4 = tour.next(t3, !forward);
-    const double g1_open = g1 + d(t3, t4);  // gain with (t3, t4) removed, before closing
-    if (g1_open - d(t4, t1) > 0.0) {
+    const double g1_open = g1 + tour.next_length(t3, !forward);  // (t3, t4) removed, not closed
+    if (g1_open - d(t1, t4) > 0.0) {
       tour.two_opt_move(t1, t2, t4, t3);
       touched.set({t1, t2, t3, t4});
       return true;
@@ -46,10 +46,10 @@ struct Step {
       if (t5 == t3 || t5 == t1) continue;
       // t5 on the reversed part t2..t4: its neighbour towards t4 is its successor; on t3..t1 it
       // is its predecessor.
-      const bool reversed_part = tour.between(t2, t5, t4, forward);
-      const std::uint32_t t6 = tour.next(t5, reversed_part ? forward : !forward);
+      const bool towards_t4 = tour.between(t2, t5, t4, forward) ? forward : !forward;
+      const std::uint32_t t6 = tour.next(t5, towards_t4);
       if (t6 == t4) continue;
-      if (g2 + d(t5, t6) - d(t6, t1) <= 0.0) continue;
+      if (g2 + tour.next_length(t5, towards_t4) - d(t1, t6) <= 0.0) continue;
       tour.two_opt_move(t1, t2, t4, t3);  // t1 t4 .. t2 t3 .. (closing edge (t1, t4) for now)
       tour.two_opt_move(t4, t1, t5, t6);  // replaces (t1, t4), (t6, t5) by (t4, t5), (t1, t6)
       touched.set({t1, t2, t3, t4, t5, t6});
@@ -62,7 +62,7 @@ struct Step {
   bool cycle_side() {
     const std::uint32_t t4 = tour.next(t3, forward);
     if (t4 == t1) return false;
-    const double g1_open = g1 + d(t3, t4);
+    const double g1_open = g1 + tour.next_length(t3, forward);
     const auto near = problem.neighbours(t4);
     const auto near_d = problem.neighbour_distances(t4);
     for (std::size_t r = 0; r < k; ++r) {
@@ -71,18 +71,18 @@ struct Step {
       const std::uint32_t t5 = near[r];
       if (t5 == t3 || !tour.between(t2, t5, t3, forward)) continue;
       const std::uint32_t after = tour.next(t5, forward);
-      if (g2 + d(t5, after) - d(after, t1) > 0.0) {  // Or-opt: t1 [t6..t3] [t2..t5] t4
-        tour.two_opt_move(t1, t2, t3, t4);           // t1 t3..t6 t5..t2 t4
-        tour.two_opt_move(t1, t3, after, t5);        // t1 t6..t3 t5..t2 t4
-        tour.two_opt_move(t3, t5, t2, t4);           // t1 t6..t3 t2..t5 t4
+      if (g2 + tour.next_length(t5, forward) - d(t1, after) > 0.0) {  // t1 [t6..t3] [t2..t5] t4
+        tour.two_opt_move(t1, t2, t3, t4);                            // t1 t3..t6 t5..t2 t4
+        tour.two_opt_move(t1, t3, after, t5);                         // t1 t6..t3 t5..t2 t4
+        tour.two_opt_move(t3, t5, t2, t4);                            // t1 t6..t3 t2..t5 t4
         touched.set({t1, t2, t3, t4, t5, after});
         return true;
       }
       if (t5 == t2) continue;
       const std::uint32_t before = tour.next(t5, !forward);
-      if (g2 + d(t5, before) - d(before, t1) > 0.0) {  // t1 [t6..t2] [t3..t5] t4
-        tour.two_opt_move(t1, t2, before, t5);         // t1 t6..t2 t5..t3 t4
-        tour.two_opt_move(t2, t5, t3, t4);             // t1 t6..t2 t3..t5 t4
+      if (g2 + tour.next_length(t5, !forward) - d(t1, before) > 0.0) {  // t1 [t6..t2] [t3..t5] t4
+        tour.two_opt_move(t1, t2, before, t5);                          // t1 t6..t2 t5..t3 t4
+        tour.two_opt_move(t2, t5, t3, t4);                              // t1 t6..t2 t3..t5 t4
         touched.set({t1, t2, t3, t4, t5, before});
         return true;
       }
@@ -100,7 +100,7 @@ bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1
   for (const bool forward : {true, false}) {
     step.forward = forward;
     step.t2 = tour.next(t1, forward);
-    const double d12 = problem.distance(t1, step.t2);
+    const double d12 = tour.next_length(t1, forward);
     const std::uint32_t t2_next = tour.next(step.t2, forward);
     const auto near = problem.neighbours(step.t2);
     const auto near_d = problem.neighbour_distances(step.t2);

@@ -12,7 +12,7 @@ bool try_two_opt(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, s
                  std::uint32_t t3, double g1, bool forward, Touched& touched) {
   const std::uint32_t t4 = tour.next(t3, !forward);
   if (t4 == t2) return false;  // t3 follows t2: nothing to exchange
-  if (g1 + problem.distance(t3, t4) - problem.distance(t4, t1) <= 0.0) return false;
+  if (g1 + tour.next_length(t3, !forward) - problem.distance(t1, t4) <= 0.0) return false;
   tour.two_opt_move(t1, t2, t4, t3);
   touched.set({t1, t2, t3, t4});
   return true;
@@ -24,7 +24,7 @@ bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, 
                   Touched& touched) {
   for (const bool forward : {true, false}) {
     const std::uint32_t t2 = tour.next(t1, forward);
-    const double d12 = problem.distance(t1, t2);
+    const double d12 = tour.next_length(t1, forward);
     const auto near = problem.neighbours(t2);
     const auto near_d = problem.neighbour_distances(t2);
     for (std::size_t r = 0; r < k; ++r) {
@@ -42,9 +42,9 @@ bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t
   for (const bool forward : {true, false}) {
     const std::uint32_t t2 = tour.next(t1, forward);
     const std::uint32_t t2_next = tour.next(t2, forward);
-    const double d12 = problem.distance(t1, t2);
+    const double d12 = tour.next_length(t1, forward);
     // Gain of taking t2 out of the tour and joining its neighbours.
-    const double removal = d12 + problem.distance(t2, t2_next) - problem.distance(t1, t2_next);
+    const double removal = d12 + tour.next_length(t2, forward) - problem.distance(t1, t2_next);
     const auto near = problem.neighbours(t2);
     const auto near_d = problem.neighbour_distances(t2);
     for (std::size_t r = 0; r < k; ++r) {
@@ -57,7 +57,7 @@ bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t
       for (const bool side : {true, false}) {
         const std::uint32_t u = tour.next(t3, side);
         if (u == t2) continue;
-        const double insertion = near_d[r] + problem.distance(t2, u) - problem.distance(t3, u);
+        const double insertion = near_d[r] + problem.distance(t2, u) - tour.next_length(t3, side);
         if (removal - insertion <= 0.0) continue;
         tour.move_city(t2, t3, u);
         touched.set({t1, t2, t2_next, t3, u});
