@@ -67,15 +67,8 @@ class PermutationFamily {
   std::size_t path_length() const { return n_; }
 
   void reserve_ants(std::size_t ants) {
-    scratch_.resize(ants);
-    for (Scratch& s : scratch_) {
-      s.visited.assign(n_, 0);
-      s.unvisited.resize(n_);
-      s.slot.resize(n_);
-      s.weight.resize(k_);
-      s.node.resize(k_);
-      if constexpr (kHasNearestSearch) s.search = problem_->make_nearest_search();
-    }
+    scratch_.clear();
+    for (std::size_t a = 0; a < ants; ++a) scratch_.push_back(make_scratch());
   }
 
   InitContext init_context(std::size_t ants, bool local_search) const {
@@ -84,11 +77,7 @@ class PermutationFamily {
 
   /// C_nn: length of the nearest-neighbour tour from node 0.
   double reference_cost() const {
-    Scratch s;
-    s.visited.assign(n_, 0);
-    s.unvisited.resize(n_);
-    s.slot.resize(n_);
-    if constexpr (kHasNearestSearch) s.search = problem_->make_nearest_search();
+    Scratch s = make_scratch();
     std::vector<std::uint32_t> tour;
     begin(s, tour, 0);
     for (std::uint32_t step = 1; step < n_; ++step) {
@@ -150,13 +139,27 @@ class PermutationFamily {
 
   struct Scratch {
     std::vector<std::uint8_t> visited;
-    std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes
+    std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes (scan fallback)
     std::vector<std::uint32_t> slot;       // position of a node in `unvisited`
     std::uint32_t remaining = 0;
     std::vector<double> weight;                  // weights of the feasible candidates
     std::vector<std::uint32_t> node;             // the feasible candidates
     [[no_unique_address]] NearestSearch search;  // the problem's fallback search, if any
   };
+
+  Scratch make_scratch() const {
+    Scratch s;
+    s.visited.assign(n_, 0);
+    s.weight.resize(k_);
+    s.node.resize(k_);
+    if constexpr (kHasNearestSearch) {
+      s.search = problem_->make_nearest_search();
+    } else {
+      s.unvisited.resize(n_);
+      s.slot.resize(n_);
+    }
+    return s;
+  }
 
   double heuristic(std::uint32_t i, std::uint32_t j) const {
     if constexpr (PermutationProblemWithHeuristic<P>) {
@@ -172,9 +175,12 @@ class PermutationFamily {
 
   void begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
     std::fill(s.visited.begin(), s.visited.end(), 0);
-    for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
-    s.remaining = n_;
-    if constexpr (kHasNearestSearch) s.search.reset();
+    if constexpr (kHasNearestSearch) {
+      s.search.reset();
+    } else {
+      for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
+      s.remaining = n_;
+    }
     tour.clear();
     tour.reserve(n_);
     visit(s, tour, start);
@@ -183,10 +189,13 @@ class PermutationFamily {
   static void visit(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t node) {
     tour.push_back(node);
     s.visited[node] = 1;
-    const std::uint32_t last = s.unvisited[--s.remaining];
-    s.unvisited[s.slot[node]] = last;
-    s.slot[last] = s.slot[node];
-    if constexpr (kHasNearestSearch) s.search.remove(node);
+    if constexpr (kHasNearestSearch) {
+      s.search.remove(node);
+    } else {
+      const std::uint32_t last = s.unvisited[--s.remaining];
+      s.unvisited[s.slot[node]] = last;
+      s.slot[last] = s.slot[node];
+    }
   }
 
   template <class Rule>
