@@ -74,7 +74,9 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
         ->capture_default_str();
   }
   command
-      .add_option("--backend", o.backend, "parallel backend (auto: serial on 1 thread, else omp)")
+      .add_option("--backend", o.backend,
+                  "parallel backend (auto: serial on 1 thread, else tbb; with omp on a shared "
+                  "machine set OMP_WAIT_POLICY=passive)")
       ->check(CLI::IsMember({"auto", "serial", "omp", "tbb"}))
       ->capture_default_str();
   command.add_option("--alpha", p.alpha, "pheromone exponent")
@@ -143,7 +145,9 @@ tsp::ProblemSettings problem_settings(const TspOptions& o) { return o.problem; }
 
 std::string backend_name(const TspOptions& o) {
   if (o.backend != "auto") return o.backend;
-  return o.threads == 1 ? "serial" : "omp";
+  // TBB, not OpenMP: OpenMP's default spin-waiting at the end of every iteration costs half
+  // the iterations when other processes compete for the cores (docs/tsp.md, "Threads").
+  return o.threads == 1 ? "serial" : "tbb";
 }
 
 aco::AnyBackend make_backend(const TspOptions& o) {

@@ -17,7 +17,7 @@ struct TspOptions {
   std::string variant = "mmas";       ///< as, eas, ras, acs, mmas, hybrid
   std::string local_search = "3opt";  ///< none, 2opt, 2.5opt, 3opt
   std::string ls_start = "changed";  ///< changed: queue cities whose edges changed; all: every city
-  std::string backend = "auto";      ///< auto (serial on 1 thread, else omp), serial, omp, tbb
+  std::string backend = "auto";      ///< auto (serial on 1 thread, else tbb), serial, omp, tbb
   std::size_t threads = 1;           ///< threads building ants
   tsp::ProblemSettings problem;      ///< candidate and neighbour lists, matrix limit
   tsp::SolverSettings solver;        ///< engine parameters (variant/local search set from names)

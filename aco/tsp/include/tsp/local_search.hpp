@@ -36,7 +36,7 @@ struct LocalSearchSettings {
   /// Neighbourhood (none: leave tours as built).
   LocalSearchKind kind = LocalSearchKind::three_opt;
   /// Nearest neighbours tried per city (capped by the problem's lists).
-  std::size_t neighbours = 20;
+  std::size_t neighbours = 10;
   /// Start with only the cities that have a tour edge not in the tour this workspace last
   /// returned (the same ant's previous local optimum); false: every city, as ACOTSP.
   bool queue_changed_only = true;
