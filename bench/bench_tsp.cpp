@@ -3,11 +3,13 @@
 // seeded 20,000-city random instance.
 //
 //   build/bench/bench_tsp --benchmark_filter=Construct
+//   build/bench/bench_tsp --benchmark_filter=ConstructFallback
 //   build/bench/bench_tsp --benchmark_filter=LocalSearch
 
 #include <benchmark/benchmark.h>
 
 #include <map>
+#include <span>
 #include <memory>
 #include <string>
 #include <vector>
@@ -75,6 +77,49 @@ BENCHMARK(BM_Construct)
     ->ArgsProduct({{0, 1, 2, 3}, {1, 2}})
     ->ArgNames({"instance", "threads"})
     ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+/// TspProblem without its nearest-unvisited search: the engine falls back to its O(n) scan.
+struct ScanFallback {
+  const tsp::TspProblem* p;
+  std::size_t size() const { return p->size(); }
+  double distance(std::uint32_t i, std::uint32_t j) const { return p->distance(i, j); }
+  std::span<const std::uint32_t> candidates(std::uint32_t i) const { return p->candidates(i); }
+  double cost(std::span<const std::uint32_t> t) const { return p->cost(t); }
+};
+
+/// The construction fallback with the grid search and with the engine's scan, serial.
+/// Arguments: instance index, 1 = grid search, 0 = scan.
+void BM_ConstructFallback(benchmark::State& state) {
+  const tsp::TspProblem& p = problem(static_cast<std::size_t>(state.range(0)));
+  const ScanFallback scan{&p};
+  const auto run = [&](auto& family) {
+    family.reserve_ants(1);
+    aco::MaxMinUpdate update;
+    update.initialize(family.trail(), family.init_context(1, false));
+    family.prepare(aco::RandomProportional{});
+    std::vector<std::uint32_t> tour;
+    std::uint64_t round = 0;
+    for (auto _ : state) {
+      aco::Rng rng = aco::ant_stream(1, ++round, 0);
+      family.construct(0, tour, rng, aco::RandomProportional{});
+      benchmark::DoNotOptimize(tour.data());
+    }
+  };
+  if (state.range(1) == 1) {
+    aco::PermutationFamily<tsp::TspProblem> family(p, 1.0, 2.0);
+    run(family);
+  } else {
+    aco::PermutationFamily<ScanFallback> family(scan, 1.0, 2.0);
+    run(family);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(kInstances[static_cast<std::size_t>(state.range(0))] +
+                 (state.range(1) == 1 ? " grid search" : " scan"));
+}
+BENCHMARK(BM_ConstructFallback)
+    ->ArgsProduct({{1, 2, 3}, {1, 0}})
+    ->ArgNames({"instance", "grid"})
     ->Unit(benchmark::kMillisecond);
 
 /// Arguments: instance index, local search kind. One benchmark iteration improves one freshly
