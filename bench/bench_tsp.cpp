@@ -9,8 +9,8 @@
 #include <benchmark/benchmark.h>
 
 #include <map>
-#include <span>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 

@@ -41,7 +41,7 @@ TEST(LocalSearch, NeverLengthensKeepsAPermutationAndEveryMoveGains) {
         auto tour = testing::random_tour(instance.size(), rng);
         const double before = problem.cost(tour);
         ls.improve(problem, tour, workspace, rng, {});
-        ASSERT_TRUE(testing::is_tour(tour, instance.size()));
+        ASSERT_TRUE(testing::is_permutation_of_n(tour, instance.size()));
         const double after = problem.cost(tour);
         EXPECT_LE(after, before);
         // Integer distances: each applied move shortens the tour by at least 1.
@@ -199,7 +199,7 @@ TEST(LocalSearch, StopsAtAnExpiredToken) {
   ls.improve(problem, tour, workspace, rng, expired);
   EXPECT_TRUE(workspace.stats.stopped);
   EXPECT_EQ(workspace.stats.examined, 64U);  // the first poll
-  EXPECT_TRUE(testing::is_tour(tour, problem.size()));
+  EXPECT_TRUE(testing::is_permutation_of_n(tour, problem.size()));
   EXPECT_LE(problem.cost(tour), before);
   const aco::StopToken cpu_expired(aco::StopToken::Clock::time_point::max(), 0.0);
   auto fresh = ls.make_workspace(problem);
@@ -226,10 +226,10 @@ TEST(LocalSearch, StartsFromChangedCitiesOnly) {
   kicked.insert(kicked.end(), tour.begin() + 2 * q + 1, tour.begin() + 3 * q + 1);
   kicked.insert(kicked.end(), tour.begin() + q + 1, tour.begin() + 2 * q + 1);
   kicked.insert(kicked.end(), tour.begin() + 3 * q + 1, tour.end());
-  ASSERT_TRUE(testing::is_tour(kicked, problem.size()));
+  ASSERT_TRUE(testing::is_permutation_of_n(kicked, problem.size()));
   const double kicked_length = problem.cost(kicked);
   ls.improve(problem, kicked, workspace, rng, {});
-  EXPECT_TRUE(testing::is_tour(kicked, problem.size()));
+  EXPECT_TRUE(testing::is_permutation_of_n(kicked, problem.size()));
   EXPECT_LE(problem.cost(kicked), kicked_length);
   EXPECT_GE(workspace.stats.examined, 6U);
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../aco/test_problems.hpp"
 #include "aco/random.hpp"
 #include "tsp/instance.hpp"
 
@@ -59,15 +60,8 @@ inline Instance random_instance(std::size_t n, std::uint64_t seed, EdgeWeightTyp
   return Instance("random", type, std::move(points));
 }
 
-inline bool is_tour(std::span<const std::uint32_t> tour, std::size_t n) {
-  if (tour.size() != n) return false;
-  std::vector<bool> seen(n, false);
-  for (std::uint32_t c : tour) {
-    if (c >= n || seen[c]) return false;
-    seen[c] = true;
-  }
-  return true;
-}
+/// Whether a tour is a permutation of 0..n-1 (the engine tests' check).
+using aco::testing::is_permutation_of_n;
 
 inline std::vector<std::uint32_t> random_tour(std::size_t n, aco::Rng& rng) {
   std::vector<std::uint32_t> tour(n);

@@ -24,6 +24,22 @@ struct Touched {
   }
 };
 
+/// The gain criterion over a neighbour list: calls f(j, gain - d(i, j)) for the neighbours j of
+/// i, nearest first, while that partial gain is positive (the lists are sorted, so no later
+/// neighbour gains either). Returns true as soon as f does (f applied a move).
+template <class F>
+bool for_each_gainful_neighbour(const TspProblem& problem, std::uint32_t i, std::size_t k,
+                                double gain, F&& f) {
+  const auto near = problem.neighbours(i);
+  const auto near_d = problem.neighbour_distances(i);
+  for (std::size_t r = 0; r < k; ++r) {
+    const double partial = gain - near_d[r];
+    if (partial <= 0.0) return false;
+    if (f(near[r], partial)) return true;
+  }
+  return false;
+}
+
 bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
                   Touched& touched);
 bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,

@@ -37,25 +37,19 @@ struct Step {
       touched.set({t1, t2, t3, t4});
       return true;
     }
-    const auto near = problem.neighbours(t4);
-    const auto near_d = problem.neighbour_distances(t4);
-    for (std::size_t r = 0; r < k; ++r) {
-      const double g2 = g1_open - near_d[r];
-      if (g2 <= 0.0) break;
-      const std::uint32_t t5 = near[r];
-      if (t5 == t3 || t5 == t1) continue;
+    return for_each_gainful_neighbour(problem, t4, k, g1_open, [&](std::uint32_t t5, double g2) {
+      if (t5 == t3 || t5 == t1) return false;
       // t5 on the reversed part t2..t4: its neighbour towards t4 is its successor; on t3..t1 it
       // is its predecessor.
       const bool towards_t4 = tour.between(t2, t5, t4, forward) ? forward : !forward;
       const std::uint32_t t6 = tour.next(t5, towards_t4);
-      if (t6 == t4) continue;
-      if (g2 + tour.next_length(t5, towards_t4) - d(t1, t6) <= 0.0) continue;
+      if (t6 == t4) return false;
+      if (g2 + tour.next_length(t5, towards_t4) - d(t1, t6) <= 0.0) return false;
       tour.two_opt_move(t1, t2, t4, t3);  // t1 t4 .. t2 t3 .. (closing edge (t1, t4) for now)
       tour.two_opt_move(t4, t1, t5, t6);  // replaces (t1, t4), (t6, t5) by (t4, t5), (t1, t6)
       touched.set({t1, t2, t3, t4, t5, t6});
       return true;
-    }
-    return false;
+    });
   }
 
   /// t4 = successor of t3.
@@ -63,13 +57,8 @@ struct Step {
     const std::uint32_t t4 = tour.next(t3, forward);
     if (t4 == t1) return false;
     const double g1_open = g1 + tour.next_length(t3, forward);
-    const auto near = problem.neighbours(t4);
-    const auto near_d = problem.neighbour_distances(t4);
-    for (std::size_t r = 0; r < k; ++r) {
-      const double g2 = g1_open - near_d[r];
-      if (g2 <= 0.0) break;
-      const std::uint32_t t5 = near[r];
-      if (t5 == t3 || !tour.between(t2, t5, t3, forward)) continue;
+    return for_each_gainful_neighbour(problem, t4, k, g1_open, [&](std::uint32_t t5, double g2) {
+      if (t5 == t3 || !tour.between(t2, t5, t3, forward)) return false;
       const std::uint32_t after = tour.next(t5, forward);
       if (g2 + tour.next_length(t5, forward) - d(t1, after) > 0.0) {  // t1 [t6..t3] [t2..t5] t4
         tour.two_opt_move(t1, t2, t3, t4);                            // t1 t3..t6 t5..t2 t4
@@ -78,7 +67,7 @@ struct Step {
         touched.set({t1, t2, t3, t4, t5, after});
         return true;
       }
-      if (t5 == t2) continue;
+      if (t5 == t2) return false;
       const std::uint32_t before = tour.next(t5, !forward);
       if (g2 + tour.next_length(t5, !forward) - d(t1, before) > 0.0) {  // t1 [t6..t2] [t3..t5] t4
         tour.two_opt_move(t1, t2, before, t5);                          // t1 t6..t2 t5..t3 t4
@@ -86,8 +75,8 @@ struct Step {
         touched.set({t1, t2, t3, t4, t5, before});
         return true;
       }
-    }
-    return false;
+      return false;
+    });
   }
 };
 
@@ -102,15 +91,13 @@ bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1
     step.t2 = tour.next(t1, forward);
     const double d12 = tour.next_length(t1, forward);
     const std::uint32_t t2_next = tour.next(step.t2, forward);
-    const auto near = problem.neighbours(step.t2);
-    const auto near_d = problem.neighbour_distances(step.t2);
-    for (std::size_t r = 0; r < k; ++r) {
-      step.g1 = d12 - near_d[r];
-      if (step.g1 <= 0.0) break;
-      step.t3 = near[r];
-      if (step.t3 == t1 || step.t3 == t2_next) continue;
-      if (step.two_opt_side() || step.cycle_side()) return true;
-    }
+    if (for_each_gainful_neighbour(problem, step.t2, k, d12, [&](std::uint32_t t3, double g1) {
+          if (t3 == t1 || t3 == t2_next) return false;
+          step.t3 = t3;
+          step.g1 = g1;
+          return step.two_opt_side() || step.cycle_side();
+        }))
+      return true;
   }
   return false;
 }

@@ -25,14 +25,10 @@ bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, 
   for (const bool forward : {true, false}) {
     const std::uint32_t t2 = tour.next(t1, forward);
     const double d12 = tour.next_length(t1, forward);
-    const auto near = problem.neighbours(t2);
-    const auto near_d = problem.neighbour_distances(t2);
-    for (std::size_t r = 0; r < k; ++r) {
-      const double g1 = d12 - near_d[r];
-      if (g1 <= 0.0) break;  // lists are sorted: no later neighbour gains either
-      if (near[r] != t1 && try_two_opt(problem, tour, t1, t2, near[r], g1, forward, touched))
-        return true;
-    }
+    if (for_each_gainful_neighbour(problem, t2, k, d12, [&](std::uint32_t t3, double g1) {
+          return t3 != t1 && try_two_opt(problem, tour, t1, t2, t3, g1, forward, touched);
+        }))
+      return true;
   }
   return false;
 }
@@ -45,25 +41,23 @@ bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t
     const double d12 = tour.next_length(t1, forward);
     // Gain of taking t2 out of the tour and joining its neighbours.
     const double removal = d12 + tour.next_length(t2, forward) - problem.distance(t1, t2_next);
-    const auto near = problem.neighbours(t2);
-    const auto near_d = problem.neighbour_distances(t2);
-    for (std::size_t r = 0; r < k; ++r) {
-      const double g1 = d12 - near_d[r];
-      if (g1 <= 0.0) break;
-      const std::uint32_t t3 = near[r];
-      if (t3 == t1) continue;
+    const auto improve = [&](std::uint32_t t3, double g1) {
+      if (t3 == t1) return false;
       if (try_two_opt(problem, tour, t1, t2, t3, g1, forward, touched)) return true;
       // Node insertion: put t2 between t3 and one of its tour neighbours u.
+      const double d23 = d12 - g1;
       for (const bool side : {true, false}) {
         const std::uint32_t u = tour.next(t3, side);
         if (u == t2) continue;
-        const double insertion = near_d[r] + problem.distance(t2, u) - tour.next_length(t3, side);
+        const double insertion = d23 + problem.distance(t2, u) - tour.next_length(t3, side);
         if (removal - insertion <= 0.0) continue;
         tour.move_city(t2, t3, u);
         touched.set({t1, t2, t2_next, t3, u});
         return true;
       }
-    }
+      return false;
+    };
+    if (for_each_gainful_neighbour(problem, t2, k, d12, improve)) return true;
   }
   return false;
 }
