@@ -102,6 +102,18 @@ INSTANTIATE_TEST_SUITE_P(
       return std::string(aco::to_string(param_info.param.variant)) + "_" + ls;
     });
 
+TEST(Solver, MmasRestartsWithLocalSearch) {
+  // eil51 is solved within a few iterations; the trails then converge on the best tour and
+  // MMAS must re-initialise them (ACOTSP's scheme: restart-best older than 250 iterations and
+  // a branching factor of 2, checked every 100 iterations).
+  const TspProblem& problem = instance_problem("eil51");
+  aco::Colony<TspProblem, aco::RandomProportional, aco::MaxMinUpdate, TourLocalSearch> colony(
+      problem, {.ants = 10, .seed = 5}, {}, aco::MaxMinUpdate({.rho = 0.2}), TourLocalSearch());
+  for (int it = 0; it < 400; ++it) colony.step();
+  EXPECT_EQ(colony.best().cost, 426.0);
+  EXPECT_GT(colony.update().restarts(), 0U);
+}
+
 TEST(Solver, ResolvesTheTspDefaults) {
   const TspProblem& problem = instance_problem("eil51");
   SolverSettings s;
