@@ -202,15 +202,17 @@ class PermutationFamily {
   std::uint32_t choose_next(Scratch& s, std::uint32_t current, Rng& rng, const Rule& rule) const {
     const std::uint32_t* list = trail_.neighbours(current).data();
     const double* w = weight_.data() + std::size_t{current} * k_;
+    const std::uint8_t* visited = s.visited.data();
+    double* weight = s.weight.data();
+    std::uint32_t* node = s.node.data();
     std::size_t feasible = 0;
-    for (std::size_t r = 0; r < k_; ++r) {
-      if (s.visited[list[r]]) continue;
-      s.weight[feasible] = w[r];
-      s.node[feasible] = list[r];
-      ++feasible;
+    for (std::size_t r = 0; r < k_; ++r) {  // branch-free compaction of the unvisited candidates
+      weight[feasible] = w[r];
+      node[feasible] = list[r];
+      feasible += visited[list[r]] == 0 ? 1 : 0;
     }
     if (feasible == 0) return nearest_unvisited(s, current);
-    return s.node[rule.choose(std::span<const double>(s.weight.data(), feasible), rng)];
+    return node[rule.choose(std::span<const double>(weight, feasible), rng)];
   }
 
   /// Fallback when every candidate is visited: the nearest unvisited node (lowest id on ties).
