@@ -79,15 +79,15 @@ class PermutationFamily {
   double reference_cost() const {
     Scratch s = make_scratch();
     std::vector<std::uint32_t> tour;
-    begin(s, tour, 0);
+    std::uint32_t* t = begin(s, tour, 0);
     for (std::uint32_t step = 1; step < n_; ++step) {
       std::uint32_t next = kNone;
-      for (std::uint32_t j : trail_.neighbours(tour.back()))
+      for (std::uint32_t j : trail_.neighbours(t[step - 1]))
         if (!s.visited[j]) {
           next = j;
           break;
         }
-      visit(s, tour, next == kNone ? nearest_unvisited(s, tour.back()) : next);
+      visit(s, t, next == kNone ? nearest_unvisited(s, t[step - 1]) : next);
     }
     return problem_->cost(tour);
   }
@@ -102,9 +102,11 @@ class PermutationFamily {
   template <class Rule>
   void construct(std::size_t ant, std::vector<std::uint32_t>& tour, Rng& rng, const Rule& rule) {
     Scratch& s = scratch_[ant];
-    begin(s, tour, rng.below(n_));
+    Rng local = rng;  // the colony's generators sit side by side: keep this one's in a register
+    std::uint32_t* t = begin(s, tour, local.below(n_));
     for (std::uint32_t step = 1; step < n_; ++step)
-      visit(s, tour, choose_next(s, tour.back(), rng, rule));
+      visit(s, t, choose_next(s, t[step - 1], local, rule));
+    rng = local;
   }
 
   /// Ant Colony System: all ants move one step, then apply the local update in ant order
@@ -124,8 +126,8 @@ class PermutationFamily {
     };
     for (std::uint32_t step = 1; step < n_; ++step) {
       backend.for_each(ants.size(), [&](std::size_t a) {
-        auto& tour = ants[a].path;
-        visit(scratch_[a], tour, choose_next(scratch_[a], tour.back(), rngs[a], rule));
+        std::uint32_t* t = ants[a].path.data();
+        visit(scratch_[a], t, choose_next(scratch_[a], t[step - 1], rngs[a], rule));
       });
       for (const Solution& ant : ants) local(ant.path[step - 1], ant.path[step]);
     }
@@ -137,11 +139,14 @@ class PermutationFamily {
   static constexpr bool kHasNearestSearch = PermutationProblemWithNearestSearch<P>;
   using NearestSearch = typename detail::NearestSearchOf<P>::type;
 
-  struct Scratch {
+  /// Per-ant state, a cache line of its own: ants on different threads write theirs at every
+  /// step, and sharing a line would make the cores fight over it.
+  struct alignas(64) Scratch {
     std::vector<std::uint8_t> visited;
     std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes (scan fallback)
     std::vector<std::uint32_t> slot;       // position of a node in `unvisited`
     std::uint32_t remaining = 0;
+    std::uint32_t length = 0;                    // cities placed in the tour so far
     std::vector<double> weight;                  // weights of the feasible candidates
     std::vector<std::uint32_t> node;             // the feasible candidates
     [[no_unique_address]] NearestSearch search;  // the problem's fallback search, if any
@@ -173,7 +178,9 @@ class PermutationFamily {
     weight_[e] = (alpha_ == 1.0 ? tau : std::pow(tau, alpha_)) * eta_beta_[e];
   }
 
-  void begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
+  /// Starts a tour at `start`; returns where its cities go (the vector is sized once, so that
+  /// steps write only to its buffer, never to the vector itself).
+  std::uint32_t* begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
     std::fill(s.visited.begin(), s.visited.end(), 0);
     if constexpr (kHasNearestSearch) {
       s.search.reset();
@@ -181,13 +188,14 @@ class PermutationFamily {
       for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
       s.remaining = n_;
     }
-    tour.clear();
-    tour.reserve(n_);
-    visit(s, tour, start);
+    tour.resize(n_);
+    s.length = 0;
+    visit(s, tour.data(), start);
+    return tour.data();
   }
 
-  static void visit(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t node) {
-    tour.push_back(node);
+  static void visit(Scratch& s, std::uint32_t* tour, std::uint32_t node) {
+    tour[s.length++] = node;
     s.visited[node] = 1;
     if constexpr (kHasNearestSearch) {
       s.search.remove(node);

@@ -57,13 +57,15 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
     std::fill(w.queued.begin(), w.queued.end(), 1);
   }
   std::uint32_t count = 0;
+  aco::Rng local = rng;  // the colony's generators share cache lines; draw from a copy
   for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t j = rng.below(i + 1);
+    const std::uint32_t j = local.below(i + 1);
     w.queue[i] = w.queue[j];
     w.queue[j] = i;
   }
   for (std::uint32_t i = 0; i < n; ++i)
     if (w.queued[w.queue[i]]) w.queue[count++] = w.queue[i];
+  rng = local;
   std::uint32_t head = 0;
   detail::Touched touched;
   while (count > 0) {

@@ -51,7 +51,8 @@ struct LocalSearchStats {
 
 class TourLocalSearch {
  public:
-  struct Workspace {
+  /// One per ant, a cache line of its own (ants on different threads update theirs constantly).
+  struct alignas(64) Workspace {
     ArrayTour tour;
     ArrayTour previous;                // the last local optimum returned (empty at first)
     std::vector<std::uint32_t> queue;  // circular FIFO of cities whose don't-look bit is off
