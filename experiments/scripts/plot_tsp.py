@@ -71,19 +71,26 @@ def plot_trace(optimum, out, traces):
 def plot_construction(bench, out):
     with open(bench) as f:
         runs = json.load(f)["benchmarks"]
+    medians = any(r.get("aggregate_name") == "median" for r in runs)
     series = {}
     for r in runs:
-        if not r["name"].startswith("BM_Construct/") or r.get("run_type") == "aggregate":
+        if not r["name"].startswith("BM_Construct/"):
             continue
-        fields = dict(part.split(":") for part in r["name"].split("/")[1:] if ":" in part)
+        if medians != (r.get("aggregate_name") == "median"):
+            continue  # the medians of repetitions when there are some, else every run
+        fields = dict(part.split(":") for part in r["run_name"].split("/")[1:] if ":" in part)
         label = r.get("label", "").split()[0]
         series.setdefault(int(fields["threads"]), []).append((label, r["items_per_second"]))
     fig, ax = plt.subplots(figsize=(7, 4.5))
     names = [label for label, _ in series[min(series)]]
     width = 0.8 / len(series)
+    base = dict(series[min(series)])
     for k, (threads, points) in enumerate(sorted(series.items())):
         xs = [names.index(label) + (k - (len(series) - 1) / 2) * width for label, _ in points]
         ax.bar(xs, [v for _, v in points], width, label=f"{threads} thread(s)")
+        if threads != min(series):
+            for x, (label, v) in zip(xs, points):
+                ax.annotate(f"{v / base[label]:.2f}x", (x, v), ha="center", va="bottom")
     ax.set_xticks(range(len(names)))
     ax.set_xticklabels(names)
     ax.set_yscale("log")
