@@ -141,7 +141,8 @@ void add_tsp_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("tsp", "Solve a TSPLIB instance with an ACO variant");
   sub->add_option("--instance", command->instance, "TSPLIB .tsp file")->required();
   add_tsp_options(*sub, command->algorithm, true);
-  sub->add_option("--iterations", command->iterations, "iteration budget (0: none)");
+  sub->add_option("--iterations", command->iterations, "iteration budget (0: none)")
+      ->check(non_negative_integer());
   sub->add_option("--time", command->time_s, "wall-clock budget in seconds (0: none)")
       ->check(finite_in(0.0, 1e9));
   sub->add_option("--cpu-time", command->cpu_time_s,

@@ -190,9 +190,11 @@ void add_tsp_experiment_command(CLI::App& app) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
       ->capture_default_str();
   sub->add_option("--first-seed", c->first_seed, "seeds are first-seed, first-seed + 1, ...")
+      ->check(non_negative_integer())
       ->capture_default_str();
   add_tsp_options(*sub, c->algorithm, false);
-  sub->add_option("--iterations", c->iterations, "iteration budget per run (0: none)");
+  sub->add_option("--iterations", c->iterations, "iteration budget per run (0: none)")
+      ->check(non_negative_integer());
   sub->add_option("--time", c->time_s, "wall-clock budget per run in seconds (0: none)")
       ->check(finite_in(0.0, 1e9));
   sub->add_option("--cpu-time", c->cpu_time_s, "CPU-time budget per run in seconds (0: none)")

@@ -29,7 +29,9 @@ void add_tsp_generate_command(CLI::App& app) {
   sub->add_option("--cities", c->cities, "number of cities")
       ->check(CLI::Range(std::size_t{3}, std::size_t{10'000'000}))
       ->capture_default_str();
-  sub->add_option("--seed", c->seed, "seed of the coordinates")->capture_default_str();
+  sub->add_option("--seed", c->seed, "seed of the coordinates")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   sub->add_option("--side", c->side, "coordinates are integers in [0, side]")
       ->check(finite_in(1.0, 1.0e9))
       ->capture_default_str();

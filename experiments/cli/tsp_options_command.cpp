@@ -31,6 +31,16 @@ CLI::Validator finite_in(double lo, double hi) {
       description.str());
 }
 
+CLI::Validator non_negative_integer() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const bool digits =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? std::string() : "'" + text + "' is not a non-negative integer";
+      },
+      "non-negative integer");
+}
+
 void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   constexpr double kBig = std::numeric_limits<double>::max();
   aco::Parameters& p = o.solver.aco;
@@ -60,15 +70,20 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command
       .add_option("--ls-ants", p.local_search_ants,
                   "apply local search to this many best ants only (0: every ant)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}))
       ->capture_default_str();
   command
       .add_option("--matrix-limit", o.problem.matrix_limit,
                   "store the full distance matrix up to this many cities")
+      ->check(non_negative_integer())
       ->capture_default_str();
   command.add_option("--ants", p.ants, "ants per iteration (0: variant default)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}))
       ->capture_default_str();
   if (single_run) {
-    command.add_option("--seed", p.seed, "seed of every random choice")->capture_default_str();
+    command.add_option("--seed", p.seed, "seed of every random choice")
+        ->check(non_negative_integer())
+        ->capture_default_str();
     command.add_option("--threads", o.threads, "threads building ants")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
         ->capture_default_str();

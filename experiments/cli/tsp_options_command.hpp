@@ -40,5 +40,7 @@ std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions&
 
 /// A CLI11 validator: a finite number in [lo, hi].
 CLI::Validator finite_in(double lo, double hi);
+/// A CLI11 validator: decimal digits only (unsigned options would otherwise wrap "-1").
+CLI::Validator non_negative_integer();
 
 }  // namespace antslam::cli

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "tsp/neighbours.hpp"
 
@@ -32,6 +33,12 @@ TspProblem::TspProblem(Instance instance, const ProblemSettings& settings)
     neighbour_distance_[e] =
         instance_->distance(static_cast<std::uint32_t>(e / width_), neighbours_[e]);
   if (n_ <= settings.matrix_limit) {
+    constexpr double kMaxMatrixBytes = 8.0 * (1 << 30);
+    const double bytes = 4.0 * static_cast<double>(n_) * static_cast<double>(n_);
+    if (bytes > kMaxMatrixBytes)
+      throw std::invalid_argument("a distance matrix of " + std::to_string(n_) + " cities needs " +
+                                  std::to_string(static_cast<long>(bytes / (1 << 30))) +
+                                  " GiB; lower the matrix limit (at most 46000 cities)");
     matrix_.resize(n_ * n_);
     for (std::uint32_t i = 0; i < n_; ++i)
       for (std::uint32_t j = 0; j < n_; ++j)
