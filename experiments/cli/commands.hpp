@@ -6,6 +6,8 @@
 namespace antslam::cli {
 
 // void add_<name>_command(CLI::App& app);  -- one per subcommand, defined in <name>_command.cpp
+void add_eval_command(CLI::App& app);
+void add_frontend_command(CLI::App& app);
 void add_tsp_command(CLI::App& app);
 void add_tsp_experiment_command(CLI::App& app);
 void add_tsp_generate_command(CLI::App& app);

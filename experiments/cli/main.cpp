@@ -11,6 +11,8 @@
 int main(int argc, char** argv) {
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
   app.require_subcommand(1);
+  antslam::cli::add_eval_command(app);
+  antslam::cli::add_frontend_command(app);
   antslam::cli::add_tsp_command(app);
   antslam::cli::add_tsp_experiment_command(app);
   antslam::cli::add_tsp_generate_command(app);

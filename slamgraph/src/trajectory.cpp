@@ -54,6 +54,8 @@ Trajectory read_tum(std::istream& in, const std::string& source) {
 }
 
 Trajectory read_tum_file(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path))
+    throw std::runtime_error(path.string() + ": is a directory, expected a TUM file");
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   return read_tum(in, path.string());

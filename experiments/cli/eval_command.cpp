@@ -1,0 +1,118 @@
+// `antslam eval EST REF`: scores an estimated trajectory against a reference, both in TUM format
+// (docs/evaluation.md): ATE after rigid SE(2) alignment, RPE over a frame or distance step and,
+// with --relations, the relations metric of Kuemmerle et al. 2009. Table on stdout, JSON on
+// request.
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/atomic_file.hpp"
+#include "commands.hpp"
+#include "eval/alignment.hpp"
+#include "eval/relations.hpp"
+#include "eval/report.hpp"
+#include "slamgraph/trajectory.hpp"
+
+namespace antslam::cli {
+
+namespace {
+
+struct EvalOptions {
+  std::filesystem::path estimate;      ///< TUM file
+  std::filesystem::path reference;     ///< TUM file
+  std::filesystem::path relations;     ///< Kuemmerle relations file; empty = none
+  std::filesystem::path json;          ///< JSON result file; empty = none
+  std::filesystem::path aligned;       ///< TUM file for the aligned estimate; empty = none
+  eval::EvaluationSettings settings;   ///< tolerances (s), RPE step; align set from no_align
+  bool no_align = false;               ///< --no-align given
+  std::optional<double> rpe_distance;  ///< --rpe-distance, metres, if given
+};
+
+/// Accepts finite numbers > 0 (or >= 0 with allow_zero); CLI11 alone would let "nan" through.
+CLI::Validator finite_number(bool allow_zero) {
+  return CLI::Validator(
+      [allow_zero](std::string& text) -> std::string {
+        double value = 0.0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        const bool valid = ec == std::errc() && ptr == end && std::isfinite(value) &&
+                           (value > 0.0 || (allow_zero && value == 0.0));
+        if (valid) return {};
+        return "'" + text + "' is not a finite number " + (allow_zero ? ">= 0" : "> 0");
+      },
+      allow_zero ? "FINITE>=0" : "FINITE>0");
+}
+
+slam::Trajectory read_trajectory(const std::filesystem::path& path) {
+  slam::Trajectory trajectory = slam::read_tum_file(path);
+  if (trajectory.empty()) throw std::runtime_error(path.string() + ": no poses");
+  return trajectory;
+}
+
+void run_eval(EvalOptions options) {
+  options.settings.align = !options.no_align;
+  if (options.rpe_distance) options.settings.rpe.metres = *options.rpe_distance;
+  const slam::Trajectory estimate = read_trajectory(options.estimate);
+  const slam::Trajectory reference = read_trajectory(options.reference);
+  std::vector<eval::Relation> relations;
+  if (!options.relations.empty()) relations = eval::read_relations_file(options.relations);
+
+  const eval::Evaluation evaluation =
+      eval::evaluate(estimate, reference, options.settings, relations);
+
+  eval::print_table(std::cout, evaluation);
+  if (!options.aligned.empty()) {
+    const slam::Trajectory aligned = eval::transformed(estimate, evaluation.ate.alignment);
+    write_atomically(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
+  }
+  if (!options.json.empty()) {
+    nlohmann::json json = eval::to_json(evaluation);
+    json["estimate"] = options.estimate.string();
+    json["reference"] = options.reference.string();
+    if (!options.relations.empty()) json["relations"]["file"] = options.relations.string();
+    write_atomically(options.json, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
+  }
+}
+
+}  // namespace
+
+void add_eval_command(CLI::App& app) {
+  auto options = std::make_shared<EvalOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "eval", "Score an estimated trajectory against a reference (TUM files): ATE, RPE, relations");
+  cmd->add_option("EST", options->estimate, "estimated trajectory, TUM format")->required();
+  cmd->add_option("REF", options->reference, "reference trajectory, TUM format")->required();
+  cmd->add_option("--max-dt", options->settings.max_dt,
+                  "association tolerance between timestamps, seconds")
+      ->capture_default_str()
+      ->check(finite_number(true));
+  cmd->add_flag("--no-align", options->no_align,
+                "score the estimate as it is, without rigid SE(2) alignment");
+  auto* frames =
+      cmd->add_option("--rpe-frames", options->settings.rpe.frames, "RPE step in associated poses")
+          ->capture_default_str()
+          ->check(CLI::PositiveNumber);
+  cmd->add_option("--rpe-distance", options->rpe_distance,
+                  "RPE step as distance travelled along the reference, metres")
+      ->check(finite_number(false))
+      ->excludes(frames);
+  cmd->add_option("--relations", options->relations,
+                  "Kuemmerle et al. 2009 relations file (t1 t2 dx dy dz droll dpitch dyaw)");
+  cmd->add_option("--relations-max-dt", options->settings.relations_max_dt,
+                  "tolerance between relation and estimate timestamps, seconds")
+      ->capture_default_str()
+      ->check(finite_number(true));
+  cmd->add_option("--json", options->json, "write the results as JSON to this file");
+  cmd->add_option("--aligned-out", options->aligned,
+                  "write the estimate moved by the ATE alignment to this TUM file");
+  cmd->callback([options] { run_eval(*options); });
+}
+
+}  // namespace antslam::cli

@@ -1,0 +1,68 @@
+#pragma once
+// The laser frontend (paper Sec. III-A) from a log to a fragment set: scan matching with the
+// Gaussian of eqs. (5)-(6), fragments every few metres with alignment Gaussians and samples
+// (eq. (7)), and loop closures with hypotheses N(mu_H, Sigma_H).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "frontend/fragmenter.hpp"
+#include "frontend/laser_log.hpp"
+#include "frontend/loop_closer.hpp"
+#include "frontend/scan_matcher.hpp"
+#include "slamgraph/fragment_set.hpp"
+#include "slamgraph/trajectory.hpp"
+
+namespace antslam::frontend {
+
+struct FrontendSettings {
+  ScanMatcherSettings matcher;          ///< scan matching (eqs. (5)-(6))
+  FragmentationSettings fragmentation;  ///< fragments and samples (eq. (7))
+  LoopClosureSettings closure;          ///< loop-closure detection and matching
+};
+
+struct FrontendStats {
+  std::size_t scans = 0;          ///< scans processed
+  std::size_t unmatched = 0;      ///< scans that kept the odometry (too few points)
+  std::size_t recovered = 0;      ///< scans matched in the wide recovery window
+  double matching_seconds = 0.0;  ///< wall time of scan matching and fragmentation
+  double closure_seconds = 0.0;   ///< wall time of loop-closure detection and matching
+};
+
+struct FrontendResult {
+  slam::FragmentSet fragment_set;         ///< fragments, alignments, samples, closures
+  slam::Trajectory trajectory;            ///< scan-matcher robot poses in W (first pose = 0)
+  std::vector<FragmentRecord> fragments;  ///< which scans each fragment holds, its frame in W
+  std::vector<ClosureAttempt> attempts;   ///< every closure candidate matched, accepted or not
+  FrontendStats stats;
+};
+
+class Frontend {
+ public:
+  /// `name` goes into the fragment set (e.g. the log's file name).
+  Frontend(const FrontendSettings& settings, std::string name);
+
+  /// Processes the next scan of the log.
+  void add_scan(const LaserScan& scan);
+
+  /// Looks for closures of the last fragment and returns everything.
+  FrontendResult finish();
+
+  std::size_t fragment_count() const { return fragmenter_.fragments().size(); }
+  std::size_t closure_count() const { return closer_.closures().size(); }
+
+ private:
+  FrontendSettings settings_;
+  std::string name_;
+  ScanMatcher matcher_;
+  Fragmenter fragmenter_;
+  LoopCloser closer_;
+  slam::Trajectory trajectory_;
+  FrontendStats stats_;
+};
+
+/// Runs the frontend over a whole log.
+FrontendResult run_frontend(const LaserLog& log, const FrontendSettings& settings);
+
+}  // namespace antslam::frontend

@@ -1,0 +1,73 @@
+#include "frontend/frontend.hpp"
+
+#include <chrono>
+
+namespace antslam::frontend {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Frontend::Frontend(const FrontendSettings& settings, std::string name)
+    : settings_(settings),
+      name_(std::move(name)),
+      matcher_(settings.matcher),
+      fragmenter_(settings.fragmentation),
+      closer_(settings.closure) {}
+
+void Frontend::add_scan(const LaserScan& scan) {
+  const auto start = std::chrono::steady_clock::now();
+  const MatchResult match = matcher_.add_scan(scan);
+  if (!match.matched && !trajectory_.empty()) ++stats_.unmatched;
+  if (match.recovered) ++stats_.recovered;
+  trajectory_.push_back({scan.stamp, match.pose()});
+  const bool started =
+      fragmenter_.add(stats_.scans, scan.stamp, match.pose(), match.gaussian.covariance());
+  ++stats_.scans;
+  const std::vector<FragmentRecord>& fragments = fragmenter_.fragments();
+  const std::size_t current = fragments.size() - 1;
+  // The scan's points in its fragment's frame: matched points and the dense map.
+  const ScanMatcherSettings& m = settings_.matcher;
+  const LoopClosureSettings& c = settings_.closure;
+  const ScanSurfaces surfaces = scan_surfaces(scan, m.min_range, c.max_range, m.surface_incidence);
+  const slam::Pose2 in_fragment = slam::between(fragments[current].frame, match.pose());
+  closer_.add_points(
+      current,
+      transform_points(in_fragment, thin_points(supported_points(surfaces), c.point_spacing)),
+      transform_points(in_fragment,
+                       thin_points(dense_points(surfaces, 0.5 * c.resolution), c.resolution)));
+  stats_.matching_seconds += seconds_since(start);
+  if (started && current > 0) {
+    const auto closing = std::chrono::steady_clock::now();
+    closer_.close(current - 1, fragmenter_);
+    stats_.closure_seconds += seconds_since(closing);
+  }
+}
+
+FrontendResult Frontend::finish() {
+  FrontendResult result;
+  if (!fragmenter_.fragments().empty()) {
+    const auto closing = std::chrono::steady_clock::now();
+    closer_.close(fragmenter_.fragments().size() - 1, fragmenter_);
+    stats_.closure_seconds += seconds_since(closing);
+  }
+  result.fragment_set = fragmenter_.fragment_set(name_);
+  result.fragment_set.closures = closer_.closures();
+  result.trajectory = trajectory_;
+  result.fragments = fragmenter_.fragments();
+  result.attempts = closer_.attempts();
+  result.stats = stats_;
+  return result;
+}
+
+FrontendResult run_frontend(const LaserLog& log, const FrontendSettings& settings) {
+  Frontend frontend(settings, log.source);
+  for (const LaserScan& scan : log.scans) frontend.add_scan(scan);
+  return frontend.finish();
+}
+
+}  // namespace antslam::frontend

@@ -1,0 +1,267 @@
+#include "frontend/laser_log.hpp"
+
+#include <zlib.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace antslam::frontend {
+
+namespace {
+
+using Tokens = std::vector<std::string_view>;
+
+void split(std::string_view line, Tokens& tokens) {
+  tokens.clear();
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) tokens.push_back(line.substr(start, i - start));
+  }
+}
+
+bool is_message_name(std::string_view token) {
+  for (const char c : token)
+    if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return !token.empty() && token[0] >= 'A' && token[0] <= 'Z';
+}
+
+/// Reads the fields of one line, naming the line in every error.
+class LineReader {
+ public:
+  LineReader(const std::string& source, std::size_t line, const Tokens& tokens)
+      : source_(source), line_(line), tokens_(tokens) {}
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw std::runtime_error(source_ + ":" + std::to_string(line_) + ": " + problem);
+  }
+
+  void require(std::size_t count, std::string_view what) const {
+    if (tokens_.size() < count)
+      fail(std::string(tokens_[0]) + " has " + std::to_string(tokens_.size()) +
+           " fields, expected at least " + std::to_string(count) + " (" + std::string(what) + ")");
+  }
+
+  double number(std::size_t index, std::string_view field) const {
+    const std::string_view token = tokens_.at(index);
+    double value = 0.0;
+    const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (ec != std::errc() || ptr != token.data() + token.size())
+      fail(std::string(field) + " '" + std::string(token) + "' is not a number");
+    if (!std::isfinite(value)) fail(std::string(field) + " is not finite");
+    return value;
+  }
+
+  std::size_t count(std::size_t index, std::string_view field) const {
+    const std::string_view token = tokens_.at(index);
+    std::size_t value = 0;
+    const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (ec != std::errc() || ptr != token.data() + token.size() || value > 100000)
+      fail(std::string(field) + " '" + std::string(token) + "' is not a count");
+    return value;
+  }
+
+  slam::Pose2 pose(std::size_t index, std::string_view field) const {
+    return {number(index, field), number(index + 1, field),
+            slam::wrap_angle(number(index + 2, field))};
+  }
+
+  std::vector<float> ranges(std::size_t first, std::size_t n) const {
+    std::vector<float> out(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double r = number(first + k, "range " + std::to_string(k));
+      if (r < 0.0) fail("range " + std::to_string(k) + " is negative");
+      out[k] = static_cast<float>(r);
+    }
+    return out;
+  }
+
+  void no_extra_fields(std::size_t allowed) const {
+    if (tokens_.size() > allowed)
+      fail(std::string(tokens_[0]) + " has " + std::to_string(tokens_.size()) +
+           " fields, expected at most " + std::to_string(allowed));
+  }
+
+  std::size_t size() const { return tokens_.size(); }
+
+ private:
+  const std::string& source_;
+  std::size_t line_;
+  const Tokens& tokens_;
+};
+
+// FLASER n r_1..r_n x y theta odom_x odom_y odom_theta timestamp [host logger_timestamp]
+LaserScan parse_flaser(const LineReader& in) {
+  in.require(2, "FLASER n ...");
+  const std::size_t n = in.count(1, "number of readings");
+  if (n < 2) in.fail("FLASER needs at least 2 readings");
+  in.require(n + 9, "FLASER n ranges x y theta odom_x odom_y odom_theta timestamp");
+  in.no_extra_fields(n + 11);
+  LaserScan scan;
+  scan.ranges = in.ranges(2, n);
+  scan.odometry = in.pose(n + 5, "odometry");
+  scan.stamp = in.number(n + 8, "timestamp");
+  return scan;
+}
+
+// ROBOTLASER1 type start_angle fov resolution max_range accuracy remission_mode n r_1..r_n
+//   m v_1..v_m laser_x laser_y laser_theta robot_x robot_y robot_theta tv rv forward_safety
+//   side_safety turn_axis timestamp [host logger_timestamp]
+LaserScan parse_robotlaser1(const LineReader& in) {
+  in.require(9, "ROBOTLASER1 type start fov resolution max_range accuracy mode n ...");
+  const std::size_t n = in.count(8, "number of readings");
+  if (n < 1) in.fail("ROBOTLASER1 needs at least 1 reading");
+  in.require(n + 10, "ROBOTLASER1 ... n ranges m");
+  const std::size_t m = in.count(n + 9, "number of remissions");
+  const std::size_t tail = n + 10 + m;
+  in.require(tail + 12, "ROBOTLASER1 ... laser pose, robot pose, 5 values, timestamp");
+  in.no_extra_fields(tail + 14);
+  LaserScan scan;
+  scan.first_angle = in.number(2, "start angle");
+  scan.angle_step = in.number(4, "angular resolution");
+  scan.max_range = in.number(5, "maximum range");
+  if (!(scan.max_range > 0.0)) in.fail("maximum range must be positive");
+  scan.ranges = in.ranges(9, n);
+  const slam::Pose2 laser = in.pose(tail, "laser pose");
+  scan.odometry = in.pose(tail + 3, "robot pose");
+  scan.laser_pose = slam::between(scan.odometry, laser);
+  scan.stamp = in.number(tail + 11, "timestamp");
+  return scan;
+}
+
+// ODOM x y theta tv rv accel timestamp [host logger_timestamp]
+slam::StampedPose parse_odom(const LineReader& in) {
+  in.require(8, "ODOM x y theta tv rv accel timestamp");
+  in.no_extra_fields(10);
+  return {in.number(7, "timestamp"), in.pose(1, "odometry")};
+}
+
+// PARAM name value [timestamp host logger_timestamp]: only the laser geometry is used.
+void apply_param(const LineReader& in, const Tokens& tokens, SensorGeometry& geometry) {
+  in.require(3, "PARAM name value");
+  const std::string_view name = tokens[1];
+  if (name == "laser_front_laser_fov") {
+    const double fov = in.number(2, "laser_front_laser_fov");
+    // CARMEN writes degrees; some converted logs write radians. No laser has a FOV under 6 deg.
+    geometry.field_of_view =
+        fov <= 2.0 * std::numbers::pi + 1e-6 ? fov : fov * std::numbers::pi / 180.0;
+    if (!(geometry.field_of_view > 0.0)) in.fail("laser_front_laser_fov must be positive");
+  } else if (name == "robot_front_laser_max") {
+    geometry.max_range = in.number(2, "robot_front_laser_max");
+    if (!(geometry.max_range > 0.0)) in.fail("robot_front_laser_max must be positive");
+  } else if (name == "robot_frontlaser_offset") {
+    geometry.laser_pose.x = in.number(2, "robot_frontlaser_offset");
+  }
+}
+
+void apply_overrides(const SensorOverrides& o, SensorGeometry& g) {
+  if (o.field_of_view) g.field_of_view = *o.field_of_view;
+  if (o.first_angle) g.first_angle = *o.first_angle;
+  if (o.max_range) g.max_range = *o.max_range;
+  if (o.laser_offset) g.laser_pose = slam::Pose2{*o.laser_offset, 0.0, 0.0};
+}
+
+void check_overrides(const SensorOverrides& o) {
+  if (o.field_of_view && !(*o.field_of_view > 0.0 && *o.field_of_view <= 2.0 * std::numbers::pi))
+    throw std::invalid_argument("field of view must be in (0, 360] degrees");
+  if (o.max_range && !(*o.max_range > 0.0 && std::isfinite(*o.max_range)))
+    throw std::invalid_argument("max range must be a positive number of metres");
+  if (o.first_angle && !std::isfinite(*o.first_angle))
+    throw std::invalid_argument("first beam angle must be finite");
+  if (o.laser_offset && !std::isfinite(*o.laser_offset))
+    throw std::invalid_argument("laser offset must be finite");
+}
+
+}  // namespace
+
+LaserLog parse_carmen(std::string_view text, const std::string& source,
+                      const SensorOverrides& overrides) {
+  check_overrides(overrides);
+  LaserLog log;
+  log.source = source;
+  std::vector<bool> is_flaser;
+  Tokens tokens;
+  std::size_t line_number = 0;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(begin, end - begin);
+    begin = end + 1;
+    ++line_number;
+    split(line, tokens);
+    if (tokens.empty() || tokens[0][0] == '#') continue;
+    const LineReader in(source, line_number, tokens);
+    const std::string_view type = tokens[0];
+    if (type == "FLASER") {
+      log.scans.push_back(parse_flaser(in));
+      is_flaser.push_back(true);
+    } else if (type == "ROBOTLASER1") {
+      log.scans.push_back(parse_robotlaser1(in));
+      is_flaser.push_back(false);
+    } else if (type == "ODOM") {
+      log.odometry.push_back(parse_odom(in));
+    } else if (type == "PARAM") {
+      apply_param(in, tokens, log.flaser_geometry);
+    } else if (is_message_name(type)) {
+      ++log.skipped_messages;
+    } else {
+      in.fail("not a CARMEN message: '" + std::string(type.substr(0, 40)) + "'");
+    }
+  }
+  if (log.scans.empty()) throw std::runtime_error(source + ": no FLASER or ROBOTLASER1 scans");
+
+  SensorGeometry& g = log.flaser_geometry;
+  apply_overrides(overrides, g);
+  const double flaser_first = g.first_angle.value_or(-0.5 * g.field_of_view);
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    LaserScan& scan = log.scans[i];
+    if (is_flaser[i]) {
+      scan.first_angle = flaser_first;
+      scan.angle_step = g.field_of_view / static_cast<double>(scan.ranges.size() - 1);
+      scan.max_range = g.max_range;
+      scan.laser_pose = g.laser_pose;
+      continue;
+    }
+    if (overrides.field_of_view)
+      scan.angle_step = *overrides.field_of_view / static_cast<double>(scan.ranges.size() - 1);
+    if (overrides.first_angle) scan.first_angle = *overrides.first_angle;
+    if (overrides.max_range) scan.max_range = *overrides.max_range;
+    if (overrides.laser_offset) scan.laser_pose = slam::Pose2{*overrides.laser_offset, 0.0, 0.0};
+  }
+  return log;
+}
+
+std::string read_maybe_gzipped(const std::filesystem::path& path) {
+  // gzread reads gzip data and passes anything else through unchanged.
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (file == nullptr) throw std::runtime_error(path.string() + ": cannot open");
+  std::string content;
+  std::array<char, 1 << 16> buffer{};
+  for (;;) {
+    const int n = gzread(file, buffer.data(), static_cast<unsigned>(buffer.size()));
+    if (n < 0) {
+      int code = 0;
+      const std::string message = gzerror(file, &code);
+      gzclose(file);
+      throw std::runtime_error(path.string() + ": cannot read: " + message);
+    }
+    if (n == 0) break;
+    content.append(buffer.data(), static_cast<std::size_t>(n));
+  }
+  if (gzclose(file) != Z_OK) throw std::runtime_error(path.string() + ": truncated gzip data");
+  return content;
+}
+
+LaserLog read_carmen_file(const std::filesystem::path& path, const SensorOverrides& overrides) {
+  if (std::filesystem::is_directory(path))
+    throw std::runtime_error(path.string() + ": is a directory, not a log file");
+  return parse_carmen(read_maybe_gzipped(path), path.string(), overrides);
+}
+
+}  // namespace antslam::frontend

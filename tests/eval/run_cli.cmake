@@ -1,0 +1,35 @@
+# Runs `antslam` with ARGS ('|'-separated) and checks the outcome:
+#   EXPECT=error : non-zero exit and stderr matching STDERR_REGEX; with ONE_LINE, stderr is
+#                  exactly one line "antslam: error: ..."
+#   EXPECT=ok    : exit 0, stdout matching STDOUT_REGEX, and if FILE is set, FILE matching
+#                  FILE_REGEX
+string(REPLACE "|" ";" args "${ARGS}")
+if(FILE)
+  file(REMOVE "${FILE}")
+endif()
+execute_process(COMMAND "${ANTSLAM}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+if(EXPECT STREQUAL "error")
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "expected a non-zero exit, got 0; stdout:\n${out}")
+  endif()
+  if(NOT err MATCHES "${STDERR_REGEX}")
+    message(FATAL_ERROR "stderr does not match '${STDERR_REGEX}':\n${err}")
+  endif()
+  if(ONE_LINE AND NOT err MATCHES "^antslam: error: [^\n]+\n$")
+    message(FATAL_ERROR "stderr is not one line 'antslam: error: ...':\n${err}")
+  endif()
+else()
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "expected exit 0, got ${rc}; stderr:\n${err}")
+  endif()
+  if(NOT out MATCHES "${STDOUT_REGEX}")
+    message(FATAL_ERROR "stdout does not match '${STDOUT_REGEX}':\n${out}")
+  endif()
+  if(FILE)
+    file(READ "${FILE}" content)
+    if(NOT content MATCHES "${FILE_REGEX}")
+      message(FATAL_ERROR "${FILE} does not match '${FILE_REGEX}':\n${content}")
+    endif()
+  endif()
+endif()
