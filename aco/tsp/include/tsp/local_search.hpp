@@ -12,6 +12,10 @@
 // tour with a position index (moves are reversals of the shorter side), and don't-look bits as
 // a queue of the cities whose tour edges changed (Bentley 1992). Every move strictly shortens
 // the tour, so the tour never gets longer. The stop token is polled every 64 queue steps.
+//
+// queue_changed_only: a workspace remembers the tour it returned last (the same ant slot's
+// previous local optimum); the next search starts with only the cities that have a tour edge not
+// in it. With false every city starts active, as in ACOTSP.
 
 #include <cstddef>
 #include <cstdint>
@@ -33,13 +37,9 @@ std::string_view to_string(LocalSearchKind kind);
 std::optional<LocalSearchKind> parse_local_search(std::string_view name);
 
 struct LocalSearchSettings {
-  /// Neighbourhood (none: leave tours as built).
-  LocalSearchKind kind = LocalSearchKind::three_opt;
-  /// Nearest neighbours tried per city (capped by the problem's lists).
-  std::size_t neighbours = 10;
-  /// Start with only the cities that have a tour edge not in the tour this workspace last
-  /// returned (the same ant's previous local optimum); false: every city, as ACOTSP.
-  bool queue_changed_only = true;
+  LocalSearchKind kind = LocalSearchKind::three_opt;  ///< neighbourhood; none leaves tours as built
+  std::size_t neighbours = 10;     ///< nearest neighbours tried per city (count; capped by lists)
+  bool queue_changed_only = true;  ///< start from cities with an edge not in the last result
 };
 
 /// What one improve() call did (for tests and benchmarks).
