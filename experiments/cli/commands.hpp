@@ -11,5 +11,8 @@ void add_optimize_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_g2o_command(CLI::App& app);
 void add_frontend_command(CLI::App& app);
+void add_tsp_command(CLI::App& app);
+void add_tsp_experiment_command(CLI::App& app);
+void add_tsp_generate_command(CLI::App& app);
 
 }  // namespace antslam::cli

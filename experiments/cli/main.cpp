@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   antslam::cli::add_synth_command(app);
   antslam::cli::add_g2o_command(app);
   antslam::cli::add_frontend_command(app);
+  antslam::cli::add_tsp_command(app);
+  antslam::cli::add_tsp_experiment_command(app);
+  antslam::cli::add_tsp_generate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

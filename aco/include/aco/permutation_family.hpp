@@ -3,7 +3,8 @@
 // repeatedly picks, with the construction rule, among the unvisited nodes of its current node's
 // candidate list; when all candidates are visited it moves to the nearest unvisited node (as
 // ACOTSP's neighbour_choose_and_move_to_next, with distance as the fallback criterion). So a
-// tour costs O(n k) plus the rare fallbacks.
+// tour costs O(n k) plus the fallbacks, each an O(n) scan -- or, for problems that offer one
+// (PermutationProblemWithNearestSearch), an exact search that is about O(1) per fallback.
 
 #include <cmath>
 #include <cstddef>
@@ -11,6 +12,7 @@
 #include <limits>
 #include <span>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "aco/edge_trail.hpp"
@@ -19,6 +21,18 @@
 #include "aco/update_context.hpp"
 
 namespace antslam::aco {
+
+namespace detail {
+struct NoNearestSearch {};
+template <class P>
+struct NearestSearchOf {
+  using type = NoNearestSearch;
+};
+template <PermutationProblemWithNearestSearch P>
+struct NearestSearchOf<P> {
+  using type = decltype(std::declval<const P&>().make_nearest_search());
+};
+}  // namespace detail
 
 template <PermutationProblem P>
 class PermutationFamily {
@@ -53,14 +67,8 @@ class PermutationFamily {
   std::size_t path_length() const { return n_; }
 
   void reserve_ants(std::size_t ants) {
-    scratch_.resize(ants);
-    for (Scratch& s : scratch_) {
-      s.visited.assign(n_, 0);
-      s.unvisited.resize(n_);
-      s.slot.resize(n_);
-      s.weight.resize(k_);
-      s.node.resize(k_);
-    }
+    scratch_.clear();
+    for (std::size_t a = 0; a < ants; ++a) scratch_.push_back(make_scratch());
   }
 
   InitContext init_context(std::size_t ants, bool local_search) const {
@@ -69,20 +77,17 @@ class PermutationFamily {
 
   /// C_nn: length of the nearest-neighbour tour from node 0.
   double reference_cost() const {
-    Scratch s;
-    s.visited.assign(n_, 0);
-    s.unvisited.resize(n_);
-    s.slot.resize(n_);
+    Scratch s = make_scratch();
     std::vector<std::uint32_t> tour;
-    begin(s, tour, 0);
+    std::uint32_t* t = begin(s, tour, 0);
     for (std::uint32_t step = 1; step < n_; ++step) {
       std::uint32_t next = kNone;
-      for (std::uint32_t j : trail_.neighbours(tour.back()))
+      for (std::uint32_t j : trail_.neighbours(t[step - 1]))
         if (!s.visited[j]) {
           next = j;
           break;
         }
-      visit(s, tour, next == kNone ? nearest_unvisited(s, tour.back()) : next);
+      visit(s, t, next == kNone ? nearest_unvisited(s, t[step - 1]) : next);
     }
     return problem_->cost(tour);
   }
@@ -97,9 +102,11 @@ class PermutationFamily {
   template <class Rule>
   void construct(std::size_t ant, std::vector<std::uint32_t>& tour, Rng& rng, const Rule& rule) {
     Scratch& s = scratch_[ant];
-    begin(s, tour, rng.below(n_));
+    Rng local = rng;  // the colony's generators sit side by side: keep this one's in a register
+    std::uint32_t* t = begin(s, tour, local.below(n_));
     for (std::uint32_t step = 1; step < n_; ++step)
-      visit(s, tour, choose_next(s, tour.back(), rng, rule));
+      visit(s, t, choose_next(s, t[step - 1], local, rule));
+    rng = local;
   }
 
   /// Ant Colony System: all ants move one step, then apply the local update in ant order
@@ -119,8 +126,8 @@ class PermutationFamily {
     };
     for (std::uint32_t step = 1; step < n_; ++step) {
       backend.for_each(ants.size(), [&](std::size_t a) {
-        auto& tour = ants[a].path;
-        visit(scratch_[a], tour, choose_next(scratch_[a], tour.back(), rngs[a], rule));
+        std::uint32_t* t = ants[a].path.data();
+        visit(scratch_[a], t, choose_next(scratch_[a], t[step - 1], rngs[a], rule));
       });
       for (const Solution& ant : ants) local(ant.path[step - 1], ant.path[step]);
     }
@@ -129,15 +136,35 @@ class PermutationFamily {
 
  private:
   static constexpr std::uint32_t kNone = EdgeTrail::kNone;
+  static constexpr bool kHasNearestSearch = PermutationProblemWithNearestSearch<P>;
+  using NearestSearch = typename detail::NearestSearchOf<P>::type;
 
-  struct Scratch {
+  /// Per-ant state, a cache line of its own: ants on different threads write theirs at every
+  /// step, and sharing a line would make the cores fight over it.
+  struct alignas(64) Scratch {
     std::vector<std::uint8_t> visited;
-    std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes
+    std::vector<std::uint32_t> unvisited;  // compact list of unvisited nodes (scan fallback)
     std::vector<std::uint32_t> slot;       // position of a node in `unvisited`
     std::uint32_t remaining = 0;
-    std::vector<double> weight;       // weights of the feasible candidates
-    std::vector<std::uint32_t> node;  // the feasible candidates
+    std::uint32_t length = 0;                    // cities placed in the tour so far
+    std::vector<double> weight;                  // weights of the feasible candidates
+    std::vector<std::uint32_t> node;             // the feasible candidates
+    [[no_unique_address]] NearestSearch search;  // the problem's fallback search, if any
   };
+
+  Scratch make_scratch() const {
+    Scratch s;
+    s.visited.assign(n_, 0);
+    s.weight.resize(k_);
+    s.node.resize(k_);
+    if constexpr (kHasNearestSearch) {
+      s.search = problem_->make_nearest_search();
+    } else {
+      s.unvisited.resize(n_);
+      s.slot.resize(n_);
+    }
+    return s;
+  }
 
   double heuristic(std::uint32_t i, std::uint32_t j) const {
     if constexpr (PermutationProblemWithHeuristic<P>) {
@@ -151,51 +178,68 @@ class PermutationFamily {
     weight_[e] = (alpha_ == 1.0 ? tau : std::pow(tau, alpha_)) * eta_beta_[e];
   }
 
-  void begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
+  /// Starts a tour at `start`; returns where its cities go (the vector is sized once, so that
+  /// steps write only to its buffer, never to the vector itself).
+  std::uint32_t* begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
     std::fill(s.visited.begin(), s.visited.end(), 0);
-    for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
-    s.remaining = n_;
-    tour.clear();
-    tour.reserve(n_);
-    visit(s, tour, start);
+    if constexpr (kHasNearestSearch) {
+      s.search.reset();
+    } else {
+      for (std::uint32_t i = 0; i < n_; ++i) s.unvisited[i] = s.slot[i] = i;
+      s.remaining = n_;
+    }
+    tour.resize(n_);
+    s.length = 0;
+    visit(s, tour.data(), start);
+    return tour.data();
   }
 
-  static void visit(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t node) {
-    tour.push_back(node);
+  static void visit(Scratch& s, std::uint32_t* tour, std::uint32_t node) {
+    tour[s.length++] = node;
     s.visited[node] = 1;
-    const std::uint32_t last = s.unvisited[--s.remaining];
-    s.unvisited[s.slot[node]] = last;
-    s.slot[last] = s.slot[node];
+    if constexpr (kHasNearestSearch) {
+      s.search.remove(node);
+    } else {
+      const std::uint32_t last = s.unvisited[--s.remaining];
+      s.unvisited[s.slot[node]] = last;
+      s.slot[last] = s.slot[node];
+    }
   }
 
   template <class Rule>
   std::uint32_t choose_next(Scratch& s, std::uint32_t current, Rng& rng, const Rule& rule) const {
     const std::uint32_t* list = trail_.neighbours(current).data();
     const double* w = weight_.data() + std::size_t{current} * k_;
+    const std::uint8_t* visited = s.visited.data();
+    double* weight = s.weight.data();
+    std::uint32_t* node = s.node.data();
     std::size_t feasible = 0;
-    for (std::size_t r = 0; r < k_; ++r) {
-      if (s.visited[list[r]]) continue;
-      s.weight[feasible] = w[r];
-      s.node[feasible] = list[r];
-      ++feasible;
+    for (std::size_t r = 0; r < k_; ++r) {  // branch-free compaction of the unvisited candidates
+      weight[feasible] = w[r];
+      node[feasible] = list[r];
+      feasible += visited[list[r]] == 0 ? 1 : 0;
     }
     if (feasible == 0) return nearest_unvisited(s, current);
-    return s.node[rule.choose(std::span<const double>(s.weight.data(), feasible), rng)];
+    return node[rule.choose(std::span<const double>(weight, feasible), rng)];
   }
 
   /// Fallback when every candidate is visited: the nearest unvisited node (lowest id on ties).
   std::uint32_t nearest_unvisited(const Scratch& s, std::uint32_t current) const {
-    std::uint32_t best = kNone;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (std::uint32_t r = 0; r < s.remaining; ++r) {
-      const std::uint32_t j = s.unvisited[r];
-      const auto d = static_cast<double>(problem_->distance(current, j));
-      if (d < best_d || (d == best_d && j < best)) {
-        best_d = d;
-        best = j;
+    if constexpr (kHasNearestSearch) {
+      return s.search.nearest(current);
+    } else {
+      std::uint32_t best = kNone;
+      double best_d = std::numeric_limits<double>::infinity();
+      for (std::uint32_t r = 0; r < s.remaining; ++r) {
+        const std::uint32_t j = s.unvisited[r];
+        const auto d = static_cast<double>(problem_->distance(current, j));
+        if (d < best_d || (d == best_d && j < best)) {
+          best_d = d;
+          best = j;
+        }
       }
+      return best;
     }
-    return best;
   }
 
   const P* problem_;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 
 namespace antslam::aco {
 
@@ -44,6 +45,20 @@ template <class P>
 concept PermutationProblemWithHeuristic = PermutationProblem<P> &&
     requires(const P& p, std::uint32_t i, std::uint32_t j) {
   { p.heuristic(i, j) } -> std::convertible_to<double>;
+};
+
+/// Optional: an exact nearest-unvisited search for the construction fallback, faster than the
+/// engine's O(n) scan (e.g. a spatial grid). One search object per ant:
+///   s = p.make_nearest_search();  s.reset();  s.remove(node);  s.nearest(from)
+/// where nearest(from) must return the unvisited node with the smallest distance(from, j),
+/// lowest id on ties -- the same node the scan would pick.
+template <class P>
+concept PermutationProblemWithNearestSearch = PermutationProblem<P> && requires(const P& p) {
+  p.make_nearest_search();
+} && requires(decltype(std::declval<const P&>().make_nearest_search()) s, std::uint32_t i) {
+  s.reset();
+  s.remove(i);
+  { s.nearest(i) } -> std::convertible_to<std::uint32_t>;
 };
 
 }  // namespace antslam::aco

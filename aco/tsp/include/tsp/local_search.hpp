@@ -1,0 +1,79 @@
+#pragma once
+// TSP local search as an engine policy (aco::LocalSearchFor): improves an ant's tour after
+// construction, as in Stuetzle's ACOTSP.
+//
+//   2opt    2-opt moves (Croes 1958)
+//   2.5opt  2-opt plus node insertion (Bentley 1992's "2h-opt")
+//   3opt    sequential 3-opt (Lin 1965): every reconnection of three removed edges reachable
+//           by a sequential exchange, including the pure segment moves of Or-opt
+//
+// All three use nearest-neighbour lists (a new edge joins a city to one of its `neighbours`
+// nearest), the gain criterion (each partial exchange must gain), first improvement, an array
+// tour with a position index (moves are reversals of the shorter side), and don't-look bits as
+// a queue of the cities whose tour edges changed (Bentley 1992). Every move strictly shortens
+// the tour, so the tour never gets longer. The stop token is polled every 64 queue steps.
+//
+// queue_changed_only: a workspace remembers the tour it returned last (the same ant slot's
+// previous local optimum); the next search starts with only the cities that have a tour edge not
+// in it. With false every city starts active, as in ACOTSP.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "aco/random.hpp"
+#include "aco/termination.hpp"
+#include "tsp/array_tour.hpp"
+#include "tsp/problem.hpp"
+
+namespace antslam::tsp {
+
+enum class LocalSearchKind { none, two_opt, two_half_opt, three_opt };
+
+std::string_view to_string(LocalSearchKind kind);
+/// "none", "2opt", "2.5opt", "3opt".
+std::optional<LocalSearchKind> parse_local_search(std::string_view name);
+
+struct LocalSearchSettings {
+  LocalSearchKind kind = LocalSearchKind::three_opt;  ///< neighbourhood; none leaves tours as built
+  std::size_t neighbours = 10;     ///< nearest neighbours tried per city (count; capped by lists)
+  bool queue_changed_only = true;  ///< start from cities with an edge not in the last result
+};
+
+/// What one improve() call did (for tests and benchmarks).
+struct LocalSearchStats {
+  std::uint64_t moves = 0;     ///< improving moves applied
+  std::uint64_t examined = 0;  ///< cities taken from the don't-look queue
+  bool stopped = false;        ///< the stop token ended the search early
+};
+
+class TourLocalSearch {
+ public:
+  /// One per ant, a cache line of its own (ants on different threads update theirs constantly).
+  struct alignas(64) Workspace {
+    ArrayTour tour;
+    ArrayTour previous;                // the last local optimum returned (empty at first)
+    std::vector<std::uint32_t> queue;  // circular FIFO of cities whose don't-look bit is off
+    std::vector<std::uint8_t> queued;
+    LocalSearchStats stats;  // of the last improve() call
+  };
+
+  explicit TourLocalSearch(const LocalSearchSettings& settings = {}) : settings_(settings) {}
+
+  const LocalSearchSettings& settings() const { return settings_; }
+
+  Workspace make_workspace(const TspProblem& problem) const;
+
+  /// Improves `tour` (a permutation of the problem's cities) to a local optimum of the chosen
+  /// neighbourhood, or until `stop` expires. Cities are examined first in a random order drawn
+  /// from `rng`.
+  void improve(const TspProblem& problem, std::vector<std::uint32_t>& tour, Workspace& workspace,
+               aco::Rng& rng, const aco::StopToken& stop) const;
+
+ private:
+  LocalSearchSettings settings_;
+};
+
+}  // namespace antslam::tsp

@@ -1,0 +1,38 @@
+#pragma once
+// The plain entry point: any ACO variant with any TSP local search on any backend, chosen at
+// run time (aco::solve with the TSP's defaults).
+//
+// TSP defaults on top of the engine's (aco/variants.hpp): ants = n without local search and
+// 25 with it (ACS 10, hybrid 20); the hybrid's deposit numerator Q is the nearest-neighbour
+// tour length C_nn, so that a tour as good as the greedy one deposits 1 (with Q = 1 of eq. 12
+// a deposit of 1/L ~ 1e-5 would be lost against tau_init = 100).
+
+#include "aco/backend.hpp"
+#include "aco/colony.hpp"
+#include "aco/termination.hpp"
+#include "aco/variants.hpp"
+#include "tsp/local_search.hpp"
+#include "tsp/problem.hpp"
+
+namespace antslam::tsp {
+
+struct SolverSettings {
+  aco::Parameters aco;               ///< variant and its parameters (0 = variant default)
+  LocalSearchSettings local_search;  ///< improves every ant, or the aco.local_search_ants best
+  double hybrid_deposit = 0.0;       ///< hybrid's deposit numerator Q; 0 = C_nn (tour length)
+};
+
+/// Length of the nearest-neighbour tour from city 0 over the candidate lists (C_nn).
+double nearest_neighbour_length(const TspProblem& problem);
+
+/// The engine parameters actually used for `problem` (resolves the TSP defaults above).
+aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSettings& settings);
+/// Ants per iteration and evaporation rate actually used.
+std::size_t resolved_ants(const TspProblem& problem, const SolverSettings& settings);
+double resolved_rho(const SolverSettings& settings);
+
+aco::RunResult solve(const TspProblem& problem, const SolverSettings& settings,
+                     const aco::Termination& termination, aco::AnyBackend backend = {},
+                     const aco::Observer& observer = {});
+
+}  // namespace antslam::tsp

@@ -1,0 +1,97 @@
+#include "tsp/local_search.hpp"
+
+#include <stdexcept>
+
+#include "moves.hpp"
+
+namespace antslam::tsp {
+
+std::string_view to_string(LocalSearchKind kind) {
+  switch (kind) {
+    case LocalSearchKind::none:
+      return "none";
+    case LocalSearchKind::two_opt:
+      return "2opt";
+    case LocalSearchKind::two_half_opt:
+      return "2.5opt";
+    case LocalSearchKind::three_opt:
+      return "3opt";
+  }
+  return "?";
+}
+
+std::optional<LocalSearchKind> parse_local_search(std::string_view name) {
+  for (LocalSearchKind k : {LocalSearchKind::none, LocalSearchKind::two_opt,
+                            LocalSearchKind::two_half_opt, LocalSearchKind::three_opt})
+    if (to_string(k) == name) return k;
+  return std::nullopt;
+}
+
+TourLocalSearch::Workspace TourLocalSearch::make_workspace(const TspProblem& problem) const {
+  Workspace w;
+  w.queue.resize(problem.size());
+  w.queued.assign(problem.size(), 0);
+  return w;
+}
+
+void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32_t>& tour,
+                              Workspace& w, aco::Rng& rng, const aco::StopToken& stop) const {
+  w.stats = {};
+  const auto n = static_cast<std::uint32_t>(problem.size());
+  if (settings_.kind == LocalSearchKind::none || tour.size() < 4) return;  // n = 3: one tour
+  if (tour.size() != n) throw std::invalid_argument("local search: tour size differs from n");
+  const std::size_t k = std::min(settings_.neighbours, problem.neighbours(0).size());
+  const auto step = settings_.kind == LocalSearchKind::two_opt        ? &detail::two_opt_step
+                    : settings_.kind == LocalSearchKind::two_half_opt ? &detail::two_half_opt_step
+                                                                      : &detail::three_opt_step;
+  w.tour.assign(tour, problem);
+  // Don't-look bits: the active cities in random order (ACOTSP's random permutation).
+  const bool changed_only = settings_.queue_changed_only && w.previous.size() == n;
+  if (changed_only) {
+    std::fill(w.queued.begin(), w.queued.end(), 0);
+    for (std::uint32_t c = 0; c < n; ++c) {
+      const std::uint32_t s = w.tour.succ(c);
+      if (w.previous.succ(c) != s && w.previous.pred(c) != s) w.queued[c] = w.queued[s] = 1;
+    }
+  } else {
+    std::fill(w.queued.begin(), w.queued.end(), 1);
+  }
+  std::uint32_t count = 0;
+  aco::Rng local = rng;  // the colony's generators share cache lines; draw from a copy
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = local.below(i + 1);
+    w.queue[i] = w.queue[j];
+    w.queue[j] = i;
+  }
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (w.queued[w.queue[i]]) w.queue[count++] = w.queue[i];
+  rng = local;
+  std::uint32_t head = 0;
+  detail::Touched touched;
+  while (count > 0) {
+    if ((++w.stats.examined & 63U) == 0 && stop.expired()) {
+      w.stats.stopped = true;
+      break;
+    }
+    const std::uint32_t city = w.queue[head];
+    head = head + 1 == n ? 0 : head + 1;
+    --count;
+    w.queued[city] = 0;
+    while (step(problem, w.tour, city, k, touched)) {
+      ++w.stats.moves;
+      for (std::size_t t = 0; t < touched.count; ++t) {
+        const std::uint32_t c = touched.cities[t];
+        if (w.queued[c] || c == city) continue;
+        w.queued[c] = 1;
+        const std::uint32_t tail = head + count;
+        w.queue[tail >= n ? tail - n : tail] = c;
+        ++count;
+      }
+    }
+  }
+  const auto cities = w.tour.cities();
+  tour.assign(cities.begin(), cities.end());
+  std::swap(w.tour, w.previous);
+}
+
+}  // namespace antslam::tsp

@@ -1,0 +1,50 @@
+#pragma once
+// One improvement step of each neighbourhood from city t1, in the sequential-exchange notation
+// of Lin & Kernighan (1973): remove (t1, t2), add (t2, t3), remove (t3, t4), add (t4, t5),
+// remove (t5, t6), close with (t6, t1). t2 is t1's successor in orientation `forward` (both
+// orientations are tried); g_i is the partial gain after adding edge i. A step applies the
+// first exchange with positive total gain, records the cities whose edges changed in `touched`
+// and returns true; it returns false when t1 has no improving move.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "tsp/array_tour.hpp"
+#include "tsp/problem.hpp"
+
+namespace antslam::tsp::detail {
+
+struct Touched {
+  std::array<std::uint32_t, 6> cities{};
+  std::size_t count = 0;
+  void set(std::initializer_list<std::uint32_t> list) {
+    count = 0;
+    for (std::uint32_t c : list) cities[count++] = c;
+  }
+};
+
+/// The gain criterion over a neighbour list: calls f(j, gain - d(i, j)) for the neighbours j of
+/// i, nearest first, while that partial gain is positive (the lists are sorted, so no later
+/// neighbour gains either). Returns true as soon as f does (f applied a move).
+template <class F>
+bool for_each_gainful_neighbour(const TspProblem& problem, std::uint32_t i, std::size_t k,
+                                double gain, F&& f) {
+  const auto near = problem.neighbours(i);
+  const auto near_d = problem.neighbour_distances(i);
+  for (std::size_t r = 0; r < k; ++r) {
+    const double partial = gain - near_d[r];
+    if (partial <= 0.0) return false;
+    if (f(near[r], partial)) return true;
+  }
+  return false;
+}
+
+bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+                  Touched& touched);
+bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+                       Touched& touched);
+bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+                    Touched& touched);
+
+}  // namespace antslam::tsp::detail

@@ -1,0 +1,47 @@
+#include "tsp/solver.hpp"
+
+#include "aco/permutation_family.hpp"
+
+namespace antslam::tsp {
+
+namespace {
+bool has_local_search(const SolverSettings& s) {
+  return s.local_search.kind != LocalSearchKind::none;
+}
+}  // namespace
+
+double nearest_neighbour_length(const TspProblem& problem) {
+  return aco::PermutationFamily<TspProblem>(problem, 1.0, 0.0).reference_cost();
+}
+
+aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSettings& settings) {
+  aco::Parameters p = settings.aco;
+  p.ants = resolved_ants(problem, settings);
+  p.rho = resolved_rho(settings);
+  if (p.variant == aco::Variant::hybrid)
+    p.hybrid_deposit =
+        settings.hybrid_deposit > 0.0 ? settings.hybrid_deposit : nearest_neighbour_length(problem);
+  return p;
+}
+
+std::size_t resolved_ants(const TspProblem& problem, const SolverSettings& settings) {
+  if (settings.aco.ants > 0) return settings.aco.ants;
+  return aco::default_ants(settings.aco.variant, problem.size(), true, has_local_search(settings));
+}
+
+double resolved_rho(const SolverSettings& settings) {
+  if (settings.aco.rho > 0.0) return settings.aco.rho;
+  return aco::default_rho(settings.aco.variant, has_local_search(settings));
+}
+
+aco::RunResult solve(const TspProblem& problem, const SolverSettings& settings,
+                     const aco::Termination& termination, aco::AnyBackend backend,
+                     const aco::Observer& observer) {
+  const aco::Parameters p = resolved_parameters(problem, settings);
+  if (!has_local_search(settings))
+    return aco::solve(problem, p, termination, std::move(backend), aco::NoLocalSearch{}, observer);
+  return aco::solve(problem, p, termination, std::move(backend),
+                    TourLocalSearch(settings.local_search), observer);
+}
+
+}  // namespace antslam::tsp

@@ -1,0 +1,163 @@
+// antslam tsp: solve one TSPLIB instance, print a summary, optionally write the best tour, a
+// per-iteration trace (CSV) and a JSON summary.
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/atomic_file.hpp"
+#include "cli/progress.hpp"
+#include "commands.hpp"
+#include "tsp/optima.hpp"
+#include "tsp/tsplib.hpp"
+#include "tsp_options_command.hpp"
+
+namespace antslam::cli {
+
+namespace {
+
+struct TspCommand {
+  std::filesystem::path instance;
+  TspOptions algorithm;
+  std::uint64_t iterations = 0;
+  double time_s = 0.0;
+  double cpu_time_s = 0.0;
+  double optimum = 0.0;
+  bool stop_at_optimum = false;
+  std::filesystem::path tour_out;
+  std::filesystem::path trace_csv;
+  std::filesystem::path json_out;
+};
+
+std::string excess_text(double length, std::optional<double> optimum) {
+  if (!optimum) return "";
+  std::ostringstream out;
+  out << std::showpos << std::fixed << std::setprecision(3) << 100.0 * (length / *optimum - 1.0)
+      << "%";
+  return out.str();
+}
+
+void run(const TspCommand& c) {
+  const tsp::SolverSettings settings = solver_settings(c.algorithm);
+  aco::AnyBackend backend = make_backend(c.algorithm);
+  const tsp::TspProblem problem(tsp::read_instance(c.instance), problem_settings(c.algorithm));
+  const tsp::Instance& instance = problem.instance();
+  const std::optional<double> optimum =
+      c.optimum > 0.0 ? std::optional<double>(c.optimum) : tsp::known_optimum(c.instance);
+
+  aco::Termination termination{
+      .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
+  if (!termination.bounded()) {
+    termination.time_limit_s = 10.0;
+    std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
+  }
+  if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
+
+  Progress progress;
+  std::vector<aco::IterationReport> trace;
+  const auto observer = [&](const aco::IterationReport& r) {
+    if (!c.trace_csv.empty()) trace.push_back(r);
+    if (!progress.enabled()) return;
+    std::ostringstream line;
+    line << instance.name() << "  iteration " << r.iteration << "  best " << r.global_best << ' '
+         << excess_text(r.global_best, optimum) << "  " << std::fixed << std::setprecision(1)
+         << r.elapsed_s << " s";
+    progress.update(line.str());
+  };
+  const aco::RunResult result = tsp::solve(problem, settings, termination, backend, observer);
+  progress.clear();
+
+  const double length = instance.tour_length(result.best.path);
+  if (length != result.best.cost)
+    throw std::logic_error("internal error: the best tour's length does not match its cost");
+
+  std::cout << "instance     " << instance.name() << " (" << instance.size() << " cities, "
+            << tsp::to_string(instance.type()) << ")\n"
+            << "algorithm    " << describe_algorithm(problem, c.algorithm) << ", seed "
+            << settings.aco.seed << ", " << c.algorithm.threads << " thread(s) ("
+            << backend_name(c.algorithm) << ")\n"
+            << "best length  " << std::setprecision(15) << length;
+  if (optimum)
+    std::cout << "  (optimum " << *optimum << ", " << excess_text(length, optimum) << ")";
+  std::cout << "\niterations   " << result.iterations
+            << " (stopped: " << aco::to_string(result.reason) << ")\n"
+            << std::fixed << std::setprecision(3) << "time         " << result.elapsed_s
+            << " s, best found after " << result.time_to_best_s << " s (iteration "
+            << result.best_iteration << ")\n";
+
+  if (!c.tour_out.empty())
+    write_atomically(c.tour_out, [&](std::ostream& out) {
+      std::ostringstream comment;
+      comment << "length " << std::setprecision(15) << length << ", antslam tsp "
+              << c.algorithm.variant << " seed " << settings.aco.seed;
+      tsp::write_tour(out, instance.name() + ".tour", result.best.path, comment.str());
+    });
+  if (!c.trace_csv.empty())
+    write_atomically(c.trace_csv, [&](std::ostream& out) {
+      out << "iteration,elapsed_s,iteration_best,global_best\n" << std::setprecision(15);
+      for (const aco::IterationReport& r : trace)
+        out << r.iteration << ',' << r.elapsed_s << ',' << r.iteration_best << ',' << r.global_best
+            << '\n';
+    });
+  if (!c.json_out.empty()) {
+    nlohmann::json j = {{"instance", instance.name()},
+                        {"cities", instance.size()},
+                        {"edge_weight_type", tsp::to_string(instance.type())},
+                        {"variant", c.algorithm.variant},
+                        {"ants", tsp::resolved_ants(problem, settings)},
+                        {"rho", tsp::resolved_rho(settings)},
+                        {"local_search", c.algorithm.local_search},
+                        {"neighbours", problem.neighbours(0).size()},
+                        {"candidates", problem.candidates(0).size()},
+                        {"seed", settings.aco.seed},
+                        {"threads", c.algorithm.threads},
+                        {"backend", backend_name(c.algorithm)},
+                        {"best_length", length},
+                        {"iterations", result.iterations},
+                        {"best_iteration", result.best_iteration},
+                        {"elapsed_s", result.elapsed_s},
+                        {"time_to_best_s", result.time_to_best_s},
+                        {"stop_reason", aco::to_string(result.reason)}};
+    if (optimum) {
+      j["optimum"] = *optimum;
+      j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
+    }
+    write_atomically(c.json_out, j.dump(2) + "\n");
+  }
+}
+
+}  // namespace
+
+void add_tsp_command(CLI::App& app) {
+  auto command = std::make_shared<TspCommand>();
+  CLI::App* sub = app.add_subcommand("tsp", "Solve a TSPLIB instance with an ACO variant");
+  sub->add_option("--instance", command->instance, "TSPLIB .tsp file")->required();
+  add_tsp_options(*sub, command->algorithm, true);
+  sub->add_option("--iterations", command->iterations, "iteration budget (0: none)")
+      ->check(non_negative_integer());
+  sub->add_option("--time", command->time_s, "wall-clock budget in seconds (0: none)")
+      ->check(finite_in(0.0, 1e9));
+  sub->add_option("--cpu-time", command->cpu_time_s,
+                  "process CPU-time budget in seconds, all threads (0: none)")
+      ->check(finite_in(0.0, 1e9));
+  sub->add_option("--optimum", command->optimum,
+                  "known optimal length (default: optima.csv beside the instance)")
+      ->check(finite_in(1e-300, 1e300));
+  sub->add_flag("--stop-at-optimum", command->stop_at_optimum,
+                "stop as soon as the known optimum is reached");
+  sub->add_option("--tour-out", command->tour_out, "write the best tour (TSPLIB .tour)");
+  sub->add_option("--trace-csv", command->trace_csv,
+                  "write iteration,elapsed_s,iteration_best,global_best");
+  sub->add_option("--json", command->json_out, "write a JSON summary of the run");
+  sub->callback([command] { run(*command); });
+}
+
+}  // namespace antslam::cli
