@@ -11,6 +11,7 @@ void add_optimize_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_g2o_command(CLI::App& app);
 void add_frontend_command(CLI::App& app);
+void add_map_command(CLI::App& app);
 void add_tsp_command(CLI::App& app);
 void add_tsp_experiment_command(CLI::App& app);
 void add_tsp_generate_command(CLI::App& app);

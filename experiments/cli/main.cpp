@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   antslam::cli::add_synth_command(app);
   antslam::cli::add_g2o_command(app);
   antslam::cli::add_frontend_command(app);
+  antslam::cli::add_map_command(app);
   antslam::cli::add_tsp_command(app);
   antslam::cli::add_tsp_experiment_command(app);
   antslam::cli::add_tsp_generate_command(app);

@@ -36,14 +36,22 @@ std::vector<Pose2> AlignmentObjective::unpack(std::span<const double> x) {
   return alignments;
 }
 
+void AlignmentObjective::set_kernel_width(double width) {
+  if (!(width > 0.0) || !std::isfinite(width))
+    throw std::invalid_argument("kernel width must be a positive number");
+  width_ = width;
+}
+
 Eigen::Vector3d AlignmentObjective::add_term(const Term& term, const Eigen::Vector3d& residual,
-                                             Scores& scores) {
+                                             Scores& scores) const {
   const Eigen::Vector3d omega_r = term.information * residual;
   const double m = residual.dot(omega_r);
-  const double value = std::exp(-0.5 * m);  // the peak-normalised N(mu, Sigma)(.) of eq. (10)
+  const double w2 = width_ * width_;
+  // The peak-normalised N(mu, Sigma)(.) of eq. (10), at width 1.
+  const double value = std::exp(-0.5 * m / w2);
   scores.chi2 += m;
-  scores.weight += 1.0 - value;
-  return value * omega_r;  // d(1 - exp(-m/2))/dr
+  scores.weight += w2 * (1.0 - value);
+  return value * omega_r;  // d(s^2 (1 - exp(-m/(2 s^2))))/dr
 }
 
 Scores AlignmentObjective::evaluate(std::span<const double> x, std::span<double> gradient) {

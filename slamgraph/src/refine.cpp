@@ -3,6 +3,7 @@
 #include <nlopt.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -76,6 +77,8 @@ Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
     throw std::invalid_argument("refine: max_evaluations and lbfgs_memory must be positive");
   if (!(settings.relative_tolerance >= 0.0) || !(settings.time_limit_s >= 0.0))
     throw std::invalid_argument("refine: tolerance and time limit must be >= 0");
+  if (!(settings.graduation_factor > 1.0) || !std::isfinite(settings.graduation_factor))
+    throw std::invalid_argument("refine: graduation_factor must be a finite number > 1");
   for (std::size_t i = 1; i < set.fragments.size(); ++i) {
     const Gaussian2& g = *set.fragments[i].alignment;
     Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();
@@ -94,6 +97,34 @@ Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
   }
 }
 
+std::vector<double> Refiner::minimise(const std::vector<double>& x,
+                                      const std::vector<double>& lower,
+                                      const std::vector<double>& upper, double seconds,
+                                      int& evaluations) {
+  Tracker tracker{&objective_, x};
+  tracker.best = objective_.evaluate(x).weight;
+  nlopt::opt opt(nlopt_algorithm(settings_.algorithm), static_cast<unsigned>(x.size()));
+  opt.set_min_objective(callback, &tracker);
+  opt.set_lower_bounds(lower);
+  opt.set_upper_bounds(upper);
+  opt.set_maxeval(settings_.max_evaluations);
+  opt.set_ftol_rel(settings_.relative_tolerance);
+  if (seconds > 0.0) opt.set_maxtime(seconds);
+  if (settings_.algorithm == RefineAlgorithm::lbfgs)
+    opt.set_vector_storage(static_cast<unsigned>(settings_.lbfgs_memory));
+  std::vector<double> point = x;
+  double final_weight = 0.0;
+  try {
+    opt.optimize(point, final_weight);
+  } catch (const nlopt::roundoff_limited&) {
+    // Roundoff ends the search; the best point evaluated so far stands.
+  } catch (const std::runtime_error&) {
+    // NLOPT_FAILURE (e.g. a line search that cannot progress): same.
+  }
+  evaluations += tracker.evaluations + 1;
+  return tracker.best_x;
+}
+
 RefineResult Refiner::refine(std::span<const Pose2> start) {
   std::vector<double> x = AlignmentObjective::pack(start);
   if (x.size() != objective_.dimension())
@@ -109,31 +140,36 @@ RefineResult Refiner::refine(std::span<const Pose2> start) {
       upper[d] = std::max(upper[d], x[d]);
     }
   }
-  Tracker tracker{&objective_, x};
+  const auto began = std::chrono::steady_clock::now();
+  const auto remaining = [&] {
+    if (settings_.time_limit_s <= 0.0) return 0.0;
+    const std::chrono::duration<double> used = std::chrono::steady_clock::now() - began;
+    return std::max(1e-6, settings_.time_limit_s - used.count());
+  };
   RefineResult result;
+  objective_.set_kernel_width(1.0);
   result.start = objective_.evaluate(x);
-  tracker.best = result.start.weight;
-
-  nlopt::opt opt(nlopt_algorithm(settings_.algorithm), static_cast<unsigned>(x.size()));
-  opt.set_min_objective(callback, &tracker);
-  opt.set_lower_bounds(lower);
-  opt.set_upper_bounds(upper);
-  opt.set_maxeval(settings_.max_evaluations);
-  opt.set_ftol_rel(settings_.relative_tolerance);
-  if (settings_.time_limit_s > 0.0) opt.set_maxtime(settings_.time_limit_s);
-  if (settings_.algorithm == RefineAlgorithm::lbfgs)
-    opt.set_vector_storage(static_cast<unsigned>(settings_.lbfgs_memory));
-  double final_weight = 0.0;
-  try {
-    opt.optimize(x, final_weight);
-  } catch (const nlopt::roundoff_limited&) {
-    // Roundoff ends the search; the best point evaluated so far stands.
-  } catch (const std::runtime_error&) {
-    // NLOPT_FAILURE (e.g. a line search that cannot progress): same.
+  std::vector<double> best = minimise(x, lower, upper, remaining(), result.evaluations);
+  result.scores = objective_.evaluate(best);
+  if (settings_.graduated) {
+    // Stages s_0 = sqrt(chi2) >= every term's Mahalanobis distance, s_0 / f, ..., 1.
+    double width = std::max(1.0, std::sqrt(result.start.chi2));
+    std::vector<double> point = x;
+    for (;;) {
+      objective_.set_kernel_width(width);
+      point = minimise(point, lower, upper, remaining(), result.evaluations);
+      if (width == 1.0) break;
+      width = std::max(1.0, width / settings_.graduation_factor);
+    }
+    const Scores graduated = objective_.evaluate(point);
+    if (graduated.weight < result.scores.weight) {
+      best = point;
+      result.scores = graduated;
+      result.graduated = true;
+    }
   }
-  result.alignments = AlignmentObjective::unpack(tracker.best_x);
-  result.scores = objective_.evaluate(tracker.best_x);
-  result.evaluations = tracker.evaluations + 2;
+  result.alignments = AlignmentObjective::unpack(best);
+  result.evaluations += 2;
   return result;
 }
 

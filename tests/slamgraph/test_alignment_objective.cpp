@@ -29,10 +29,12 @@ TEST(AlignmentObjective, EqualsTheWeightOfTheChosenSamples) {
 
 // Central differences on random sets with several closures, random points (angles outside
 // [-pi, pi) included: the wrap must not matter).
+// Also at kernel widths other than 1 (graduated refinement).
 TEST(AlignmentObjective, GradientMatchesFiniteDifferences) {
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
     const FragmentSet set = testing::random_set(7, 3, 1 + seed, seed, 0.8);
     AlignmentObjective objective(set);
+    objective.set_kernel_width(seed % 2 == 0 ? 1.0 : 2.5 * static_cast<double>(seed));
     aco::Rng rng(seed);
     std::vector<double> x;
     for (std::size_t i = 1; i < set.fragments.size(); ++i) {
@@ -73,6 +75,28 @@ TEST(AlignmentObjective, HandComputedValueAndGradient) {
   EXPECT_NEAR(g[2], 0.0, 1e-15);
   objective.evaluate(std::vector<double>{0.5, 0.0, 0.0}, g);  // pulled towards H = 2
   EXPECT_NEAR(g[0], std::exp(-0.125) * 0.5 - std::exp(-1.125) * 1.5, 1e-15);
+}
+
+// The same set at kernel width s = 2: each term is s^2 (1 - exp(-m / (2 s^2))) and its gradient
+// exp(-m / (2 s^2)) Omega r. At X = (0.5, 0, 0): m_align = 0.25, m_closure = 2.25.
+TEST(AlignmentObjective, HandComputedWidenedValueAndGradient) {
+  FragmentSet set;
+  set.fragments.resize(2);
+  set.fragments[1].alignment = Gaussian2(Pose2{}, Eigen::Matrix3d::Identity());
+  set.fragments[1].samples = {Pose2{}};
+  set.closures = {{0, 1, Pose2{}, Gaussian2(Pose2{2.0, 0.0, 0.0}, Eigen::Matrix3d::Identity())}};
+  AlignmentObjective objective(set);
+  objective.set_kernel_width(2.0);
+  std::vector<double> g(3);
+  const Scores s = objective.evaluate(std::vector<double>{0.5, 0.0, 0.0}, g);
+  EXPECT_NEAR(s.weight, 4.0 * (2.0 - std::exp(-0.25 / 8.0) - std::exp(-2.25 / 8.0)), 1e-15);
+  EXPECT_NEAR(s.chi2, 2.5, 1e-15);
+  EXPECT_NEAR(g[0], std::exp(-0.25 / 8.0) * 0.5 - std::exp(-2.25 / 8.0) * 1.5, 1e-15);
+  // A very wide kernel is least squares: the sum tends to chi2 / 2.
+  objective.set_kernel_width(1e4);
+  EXPECT_NEAR(objective.evaluate(std::vector<double>{0.5, 0.0, 0.0}).weight, 1.25, 1e-6);
+  EXPECT_THROW(objective.set_kernel_width(0.0), std::invalid_argument);
+  EXPECT_THROW(objective.set_kernel_width(std::nan("")), std::invalid_argument);
 }
 
 TEST(AlignmentObjective, PackAndUnpackRoundTrip) {

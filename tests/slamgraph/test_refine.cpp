@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "slamgraph/refine.hpp"
 #include "slamgraph/synth.hpp"
 #include "support.hpp"
@@ -57,6 +59,55 @@ TEST(Refine, ReachesTheOptimumOfANoiseFreeSet) {
   }
 }
 
+// A loop whose closure the start misses by more than 20 sigma_H: the closure term of eq. (10) is
+// flat there, so the plain refinement cannot move, while graduated non-convexity closes the loop
+// (every alignment mean carries the same small heading bias, 0.3 sigma, the closure is exact).
+TEST(Refine, GraduatedRefinementClosesALoopThePlainOneCannotSee) {
+  SynthSettings s = synth_preset("paper9");
+  s.noise_free = true;
+  s.closure_sigma_xy = 0.01;
+  s.closure_sigma_theta = 0.002;
+  FragmentSet set = synthesize(s);
+  for (std::size_t i = 1; i < set.fragments.size(); ++i) {
+    const Gaussian2& g = *set.fragments[i].alignment;
+    Pose2 biased = g.mean();
+    biased.theta += 0.3 * s.sigma_theta;
+    set.fragments[i].alignment = Gaussian2(biased, g.covariance());
+  }
+  const LoopClosure& closure = set.closures[0];
+  const auto mahalanobis = [&](const std::vector<Pose2>& alignments) {
+    const Eigen::Vector3d r = closure.hypothesis.residual(closure_pose(closure, chain(alignments)));
+    return std::sqrt(r.dot(closure.hypothesis.information() * r));
+  };
+  const std::vector<Pose2> means = mean_alignments(set);
+  ASSERT_GT(mahalanobis(means), 20.0);
+
+  const RefineResult plain = Refiner(set, {.graduated = false}).refine(means);
+  EXPECT_NEAR(plain.scores.weight, 1.0, 1e-9);  // only the (saturated) closure term
+  EXPECT_FALSE(plain.graduated);
+
+  const RefineResult graduated = Refiner(set, {}).refine(means);
+  EXPECT_TRUE(graduated.graduated);
+  EXPECT_LT(graduated.scores.weight, 0.5);
+  EXPECT_LT(mahalanobis(graduated.alignments), 1.0);
+  const std::vector<Pose2> frames = chain(graduated.alignments);
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    EXPECT_LT((frames[i].translation() - set.reference[i].translation()).norm(), 0.01) << i;
+}
+
+// The graduated result replaces the plain one only when its eq. (10) weight is lower, so the
+// refinement with it is never worse than without it.
+TEST(Refine, GraduatedIsNeverWorseThanPlain) {
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const FragmentSet set = testing::random_set(7, 4, 1 + seed % 4, seed, 0.5);
+    const std::vector<Pose2> means = mean_alignments(set);
+    const RefineResult plain = Refiner(set, {.graduated = false}).refine(means);
+    const RefineResult both = Refiner(set, {}).refine(means);
+    EXPECT_LE(both.scores.weight, plain.scores.weight + 1e-12) << seed;
+    EXPECT_NEAR(both.scores.weight, score(set, both.alignments).weight, 1e-9);
+  }
+}
+
 TEST(Refine, StartOutsideTheBoxWidensIt) {
   const FragmentSet set = testing::random_set(4, 3, 1, 3);
   Refiner refiner(set, {});
@@ -70,6 +121,7 @@ TEST(Refine, ValidatesItsInput) {
   const FragmentSet set = testing::random_set(4, 3, 1, 3);
   EXPECT_THROW(Refiner(set, {.bound_sigmas = -1.0}), std::invalid_argument);
   EXPECT_THROW(Refiner(set, {.max_evaluations = 0}), std::invalid_argument);
+  EXPECT_THROW(Refiner(set, {.graduation_factor = 1.0}), std::invalid_argument);
   Refiner refiner(set, {});
   EXPECT_THROW(refiner.refine(std::vector<Pose2>(2)), std::invalid_argument);
   EXPECT_EQ(parse_refine_algorithm("slsqp"), RefineAlgorithm::slsqp);

@@ -12,6 +12,10 @@
 //   dW/d(x_k, y_k) = R_{k-1}^T v,    dW/dtheta_k = v . J (t_G - t_{F_k}) + g_theta,
 // J the 90-degree rotation. Both are sums over the closures covering k, so one difference array
 // per quantity makes the whole gradient O(N + closures).
+//
+// Kernel width (graduated non-convexity, refine.hpp): with width s every term becomes
+// s^2 (1 - exp(-m / (2 s^2))), m = r^T Omega r, and its gradient e^{-m/(2 s^2)} Omega r. Width 1 is
+// eq. (10); as s grows the sum tends to chi2 / 2 (least squares), whose basin reaches everywhere.
 
 #include <cstddef>
 #include <span>
@@ -29,8 +33,13 @@ class AlignmentObjective {
   std::size_t dimension() const { return 3 * alignments_.size(); }
 
   /// Eq. (10) weight and chi2 at x; fills `gradient` (dW/dx, same size as x) unless empty.
-  /// Not thread-safe (reuses scratch memory); use one object per thread.
+  /// With a kernel width other than 1, `weight` is the widened sum (above). Not thread-safe
+  /// (reuses scratch memory); use one object per thread.
   Scores evaluate(std::span<const double> x, std::span<double> gradient = {});
+
+  /// Sets the kernel width s (> 0; 1 = eq. (10)).
+  void set_kernel_width(double width);
+  double kernel_width() const { return width_; }
 
   static std::vector<double> pack(std::span<const Pose2> alignments);
   static std::vector<Pose2> unpack(std::span<const double> x);
@@ -50,10 +59,11 @@ class AlignmentObjective {
     double x, y, theta, c, s;
   };
 
-  /// Adds 1 - exp(-m/2) and m to `scores`; returns dW/dr.
-  static Eigen::Vector3d add_term(const Term& term, const Eigen::Vector3d& residual,
-                                  Scores& scores);
+  /// Adds s^2 (1 - exp(-m/(2 s^2))) and m to `scores`; returns dW/dr.
+  Eigen::Vector3d add_term(const Term& term, const Eigen::Vector3d& residual,
+                           Scores& scores) const;
 
+  double width_ = 1.0;  // kernel width s
   std::vector<Term> alignments_;
   std::vector<ClosureTerm> closures_;
   std::vector<ChainFrame> frames_;         // scratch: F_0..F_{N-1}

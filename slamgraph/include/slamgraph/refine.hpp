@@ -8,6 +8,16 @@
 // the mean, so the box never straddles the +-pi cut). A start outside the box widens the box
 // to include it. The result is never worse than the start: the best point NLopt evaluated is
 // returned, and the start itself is evaluated first.
+//
+// Graduated non-convexity (Blake and Zisserman 1987; Yang et al. 2020). A term of eq. (10) is
+// flat far from its mean: a loop closure the start misses by many standard deviations has no
+// gradient, so a local search from there never closes the loop (real logs: closures 80-260
+// sigma off after 370 m of scan matching). With `graduated`, the refinement also minimises the
+// widened weight sum s^2 (1 - exp(-m / (2 s^2))) (alignment_objective.hpp) for s = s_0,
+// s_0 / f, ..., 1, each stage starting where the last ended: at s_0 = sqrt(chi2 of the start)
+// every term is inside its convex region (it is least squares up to the factor 1/2), and the
+// last stage is eq. (10) itself. Of the plain and the graduated result the one with the lower
+// eq. (10) weight is returned.
 
 #include <cstdint>
 #include <span>
@@ -37,6 +47,9 @@ struct RefineSettings {
   double time_limit_s = 0.0;          ///< wall-clock budget per refinement in seconds; 0 = none
   int lbfgs_memory = 10;  ///< L-BFGS stored correction pairs (count); NLopt's own default grows
                           ///< to about 1.3e6 / n pairs, which is slow on large graphs
+  bool graduated = true;  ///< also refine by graduated non-convexity (above); max_evaluations
+                          ///< then applies to every stage
+  double graduation_factor = 2.0;  ///< kernel width divided by this per stage (> 1)
 };
 
 struct RefineResult {
@@ -44,6 +57,7 @@ struct RefineResult {
   Scores start;                   ///< objectives at the start
   Scores scores;                  ///< objectives at the result; weight <= start.weight
   int evaluations = 0;            ///< objective evaluations used
+  bool graduated = false;         ///< the graduated refinement gave the result
 };
 
 /// Holds the objective and the bounds of one fragment set; refine() may be called many times.
@@ -60,6 +74,12 @@ class Refiner {
   std::span<const double> upper() const { return upper_; }
 
  private:
+  /// NLopt from x in the box [lower, upper] on the objective at its current kernel width, with
+  /// at most `seconds` (0 = no limit); returns the best point evaluated.
+  std::vector<double> minimise(const std::vector<double>& x, const std::vector<double>& lower,
+                               const std::vector<double>& upper, double seconds,
+                               int& evaluations);
+
   AlignmentObjective objective_;
   RefineSettings settings_;
   std::vector<double> mean_angle_;  // mu_theta per alignment, to unwrap starts near it

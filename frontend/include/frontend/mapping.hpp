@@ -1,0 +1,60 @@
+#pragma once
+// The whole AntSLAM pipeline on a laser log (paper Secs. III-IV): the frontend builds the
+// fragment set (scan matching, fragments, loop closures), the optimizer picks the fragments'
+// world frames (eq. 10; several independent trials, the lowest weight wins), and every scan's
+// corrected pose is its fragment's optimised frame times its pose in the fragment.
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "frontend/frontend.hpp"
+#include "slamgraph/optimize.hpp"
+#include "slamgraph/trajectory.hpp"
+
+namespace antslam::frontend {
+
+struct MappingSettings {
+  FrontendSettings frontend;  ///< scan matching, fragments, loop closures
+  slam::OptimizeSettings optimize{.method = slam::Method::hybrid_nlopt};  ///< the optimizer
+  std::size_t trials = 20;   ///< independent optimizer trials (count); the best is the map
+  std::size_t threads = 1;   ///< threads the trials run on; results do not depend on it
+};
+
+/// Throws std::invalid_argument naming the first nonsensical field.
+void validate(const MappingSettings& settings);
+
+/// How well the optimised map agrees with one loop closure: the residual of the anchor's pose
+/// in F_a against the hypothesis H, and its Mahalanobis distance sqrt(r^T Sigma_H^-1 r).
+struct ClosureResidual {
+  std::size_t from = 0;       ///< fragment a
+  std::size_t to = 0;         ///< fragment b
+  slam::Pose2 residual;       ///< anchor pose in F_a minus H (angle wrapped)
+  double mahalanobis = 0.0;   ///< sqrt(r^T Sigma_H^-1 r), in standard deviations
+};
+
+/// The residual of every closure of `set` with the fragments at world poses `frames`.
+std::vector<ClosureResidual> closure_residuals(const slam::FragmentSet& set,
+                                               std::span<const slam::Pose2> frames);
+
+struct MappingResult {
+  std::vector<slam::OptimizeResult> trials;  ///< every trial, in trial order
+  std::size_t best = 0;                      ///< trial with the lowest weight (first on ties)
+  slam::Trajectory corrected;                ///< every scan's pose in W under the best trial
+  std::vector<ClosureResidual> before;       ///< closures under the scan-matcher frames
+  std::vector<ClosureResidual> after;        ///< closures under the best trial's frames
+  slam::Scores scan_matcher;                 ///< eq. (10) and chi2 of the scan-matcher map
+  double seconds = 0.0;                      ///< wall-clock time of the optimisation
+};
+
+/// Called after each trial with the number of trials finished so far.
+using TrialObserver = std::function<void(std::size_t finished)>;
+
+/// Optimises the fragment set of a frontend run. Trial t is seeded with
+/// slam::trial_seed(settings.optimize.seed, t). Throws std::invalid_argument if the run has no
+/// loop closure (nothing to optimise) or the settings are invalid.
+MappingResult optimize_map(const FrontendResult& frontend, const MappingSettings& settings,
+                           const TrialObserver& observer = {});
+
+}  // namespace antslam::frontend
