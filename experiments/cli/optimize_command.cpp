@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "eval/alignment.hpp"
 #include "eval/ate.hpp"
+#include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
 #include "slamgraph/result_io.hpp"
@@ -27,8 +28,7 @@ namespace {
 
 struct OptimizeOptions {
   std::string input;
-  std::string method = "hybrid";
-  std::string nlopt_algorithm = "lbfgs";
+  OptimizerOptions optimizer;
   std::string output;
   std::string reference;
   std::string g2o_out;
@@ -36,7 +36,7 @@ struct OptimizeOptions {
   std::size_t trials = 1;
   std::size_t threads = 1;
   slam::G2oImportSettings import;
-  slam::OptimizeSettings s;
+  slam::OptimizeSettings s;  ///< resolved from `optimizer`
 };
 
 slam::FragmentSet load(const OptimizeOptions& o) {
@@ -103,8 +103,7 @@ void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
 
 void run(const OptimizeOptions& options) {
   OptimizeOptions o = options;
-  o.s.method = slam::parse_method(o.method);
-  o.s.refine.algorithm = slam::parse_refine_algorithm(o.nlopt_algorithm);
+  o.s = optimize_settings(o.optimizer);
   if (o.trials == 0) throw std::invalid_argument("--trials must be >= 1");
   if (o.threads == 0) o.threads = std::max(1U, std::thread::hardware_concurrency());
   const slam::FragmentSet set = load(o);
@@ -115,7 +114,8 @@ void run(const OptimizeOptions& options) {
   print_summary(r, set, o);
 
   const std::string prefix =
-      o.output.empty() ? std::filesystem::path(o.input).stem().string() + "." + o.method : o.output;
+      o.output.empty() ? std::filesystem::path(o.input).stem().string() + "." + o.optimizer.method
+                       : o.output;
   write_atomically(prefix + ".json", [&](std::ostream& out) { slam::write_result(out, r); });
   write_atomically(prefix + ".trials.csv",
                    [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
@@ -141,45 +141,14 @@ void run(const OptimizeOptions& options) {
 
 void add_optimize_command(CLI::App& app) {
   auto o = std::make_shared<OptimizeOptions>();
-  slam::OptimizeSettings& s = o->s;
   CLI::App* cmd = app.add_subcommand("optimize", "Run an optimizer on a fragment set");
   cmd->add_option("input", o->input, "fragment-set JSON or g2o pose graph (.g2o)")->required();
-  cmd->add_option("--method", o->method,
-                  "as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, "
-                  "random or exhaustive")
-      ->capture_default_str();
   cmd->add_option("--trials", o->trials, "independent trials (trial t: seed mix(seed, t))")
       ->capture_default_str();
-  cmd->add_option("--seed", s.seed, "seed of the study")->capture_default_str();
   cmd->add_option("--threads", o->threads,
                   "threads: trials run in parallel (with --trials 1: the ants); 0 = all cores")
       ->capture_default_str();
-  cmd->add_option("--iterations", s.iterations, "ACO iterations / random rounds")
-      ->capture_default_str();
-  cmd->add_option("--time-limit", s.time_limit_s, "wall-clock budget per trial, s (0 = none)")
-      ->capture_default_str();
-  cmd->add_option("--ants", s.aco.ants, "ants per iteration (0 = the variant's default)")
-      ->capture_default_str();
-  cmd->add_option("--rho", s.aco.rho, "evaporation rate (0 = the variant's default)")
-      ->capture_default_str();
-  cmd->add_option("--p0", s.aco.p0, "hybrid: probability of a uniform choice")
-      ->capture_default_str();
-  cmd->add_option("--q0", s.aco.q0, "acs: probability of the greedy choice")->capture_default_str();
-  cmd->add_option("--nlopt-algorithm", o->nlopt_algorithm, "lbfgs, slsqp or bobyqa")
-      ->capture_default_str();
-  cmd->add_option("--bound-sigmas", s.refine.bound_sigmas,
-                  "NLopt box: samples' bounding box widened by this many sigmas")
-      ->capture_default_str();
-  cmd->add_option("--max-evaluations", s.refine.max_evaluations, "NLopt evaluations per refinement")
-      ->capture_default_str();
-  cmd->add_option("--lbfgs-memory", s.refine.lbfgs_memory, "NLopt L-BFGS stored correction pairs")
-      ->capture_default_str();
-  cmd->add_flag("--refine-each", s.refine_each_improvement,
-                "hybrid+nlopt: refine every new global-best ant, not only the final one");
-  cmd->add_option("--ceres-iterations", s.ceres.max_iterations, "Ceres iterations")
-      ->capture_default_str();
-  cmd->add_option("--max-paths", s.max_exhaustive_paths, "exhaustive: refuse larger trees")
-      ->capture_default_str();
+  add_optimizer_options(*cmd, o->optimizer);
   cmd->add_option("-m,--samples", o->import.samples, "g2o input: samples drawn per alignment")
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
@@ -190,7 +159,7 @@ void add_optimize_command(CLI::App& app) {
   cmd->add_option("--g2o-out", o->g2o_out, "write the best map as a g2o pose graph");
   cmd->add_option("--tum-out", o->tum_out, "write the best map's trajectory in TUM format");
   cmd->callback([o] {
-    o->import.seed = o->s.seed;
+    o->import.seed = o->optimizer.settings.seed;
     run(*o);
   });
 }

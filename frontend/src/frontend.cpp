@@ -12,6 +12,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+void validate(const FrontendSettings& settings) {
+  validate(settings.matcher);
+  validate(settings.fragmentation);
+  validate(settings.closure);
+}
+
 Frontend::Frontend(const FrontendSettings& settings, std::string name)
     : settings_(settings),
       name_(std::move(name)),

@@ -8,6 +8,12 @@
 
 namespace antslam::frontend {
 
+slam::OptimizeSettings default_mapping_optimizer() {
+  slam::OptimizeSettings s;
+  s.method = slam::Method::hybrid_nlopt;
+  return s;
+}
+
 void validate(const MappingSettings& s) {
   if (s.trials < 1) throw std::invalid_argument("mapping: trials must be >= 1");
 }
@@ -17,21 +23,19 @@ std::vector<ClosureResidual> closure_residuals(const slam::FragmentSet& set,
   std::vector<ClosureResidual> out;
   out.reserve(set.closures.size());
   for (const slam::LoopClosure& c : set.closures) {
-    const slam::Pose2 pose = slam::closure_pose(c, frames);
-    const slam::Pose2& h = c.hypothesis.mean();
-    const Eigen::Vector3d r(pose.x - h.x, pose.y - h.y, slam::wrap_angle(pose.theta - h.theta));
+    const Eigen::Vector3d r = c.hypothesis.residual(slam::closure_pose(c, frames));
     out.push_back({c.from, c.to, slam::Pose2{r.x(), r.y(), r.z()},
                    std::sqrt(r.dot(c.hypothesis.information() * r))});
   }
   return out;
 }
 
-MappingResult optimize_map(const FrontendResult& frontend, const MappingSettings& settings,
+MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& settings,
                            const TrialObserver& observer) {
   validate(settings);
-  const slam::FragmentSet& set = frontend.fragment_set;
   if (set.closures.empty())
-    throw std::invalid_argument(set.name + ": the frontend found no loop closure, so there is "
+    throw std::invalid_argument(set.name +
+                                ": the frontend found no loop closure, so there is "
                                 "nothing to optimise (the scan-matcher map is the result)");
   const auto start = std::chrono::steady_clock::now();
   MappingResult r;
@@ -40,7 +44,8 @@ MappingResult optimize_map(const FrontendResult& frontend, const MappingSettings
     if (r.trials[t].scores.weight < r.trials[r.best].scores.weight) r.best = t;
   const std::vector<slam::Pose2> means = slam::mean_alignments(set);
   r.scan_matcher = slam::score(set, means);
-  r.before = closure_residuals(set, slam::chain(means));
+  r.scan_matcher_frames = slam::chain(means);
+  r.before = closure_residuals(set, r.scan_matcher_frames);
   r.after = closure_residuals(set, r.trials[r.best].frames);
   r.corrected = slam::world_trajectory(set, r.trials[r.best].frames);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -22,6 +22,9 @@ struct FrontendSettings {
   LoopClosureSettings closure;          ///< loop-closure detection and matching
 };
 
+/// Throws std::invalid_argument naming the first nonsensical field.
+void validate(const FrontendSettings& settings);
+
 struct FrontendStats {
   std::size_t scans = 0;          ///< scans processed
   std::size_t unmatched = 0;      ///< scans that kept the odometry (too few points)

@@ -15,23 +15,26 @@
 
 namespace antslam::frontend {
 
+/// The pipeline's optimizer: hybrid (Algorithm 2) + NLopt refinement, otherwise the defaults.
+slam::OptimizeSettings default_mapping_optimizer();
+
 struct MappingSettings {
-  FrontendSettings frontend;  ///< scan matching, fragments, loop closures
-  slam::OptimizeSettings optimize{.method = slam::Method::hybrid_nlopt};  ///< the optimizer
-  std::size_t trials = 20;   ///< independent optimizer trials (count); the best is the map
-  std::size_t threads = 1;   ///< threads the trials run on; results do not depend on it
+  slam::OptimizeSettings optimize = default_mapping_optimizer();  ///< method and parameters
+  std::size_t trials = 20;  ///< independent optimizer trials (count); the lowest weight wins
+  std::size_t threads = 1;  ///< threads the trials run on (0 = all cores); results do not
+                            ///< depend on it
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.
 void validate(const MappingSettings& settings);
 
-/// How well the optimised map agrees with one loop closure: the residual of the anchor's pose
-/// in F_a against the hypothesis H, and its Mahalanobis distance sqrt(r^T Sigma_H^-1 r).
+/// How well a map agrees with one loop closure: the residual of the anchor's pose in F_a
+/// against the hypothesis H, and its Mahalanobis distance sqrt(r^T Sigma_H^-1 r).
 struct ClosureResidual {
-  std::size_t from = 0;       ///< fragment a
-  std::size_t to = 0;         ///< fragment b
-  slam::Pose2 residual;       ///< anchor pose in F_a minus H (angle wrapped)
-  double mahalanobis = 0.0;   ///< sqrt(r^T Sigma_H^-1 r), in standard deviations
+  std::size_t from = 0;      ///< fragment a
+  std::size_t to = 0;        ///< fragment b
+  slam::Pose2 residual;      ///< anchor pose in F_a minus H (metres, radians; angle wrapped)
+  double mahalanobis = 0.0;  ///< sqrt(r^T Sigma_H^-1 r), standard deviations
 };
 
 /// The residual of every closure of `set` with the fragments at world poses `frames`.
@@ -39,22 +42,24 @@ std::vector<ClosureResidual> closure_residuals(const slam::FragmentSet& set,
                                                std::span<const slam::Pose2> frames);
 
 struct MappingResult {
-  std::vector<slam::OptimizeResult> trials;  ///< every trial, in trial order
-  std::size_t best = 0;                      ///< trial with the lowest weight (first on ties)
-  slam::Trajectory corrected;                ///< every scan's pose in W under the best trial
-  std::vector<ClosureResidual> before;       ///< closures under the scan-matcher frames
-  std::vector<ClosureResidual> after;        ///< closures under the best trial's frames
-  slam::Scores scan_matcher;                 ///< eq. (10) and chi2 of the scan-matcher map
-  double seconds = 0.0;                      ///< wall-clock time of the optimisation
+  std::vector<slam::OptimizeResult> trials;      ///< every trial, in trial order
+  std::size_t best = 0;                          ///< trial with the lowest weight (first on ties)
+  std::vector<slam::Pose2> scan_matcher_frames;  ///< F_i in W from the means mu_i (eq. 8)
+  slam::Trajectory corrected;                    ///< every scan's pose in W under the best trial
+  std::vector<ClosureResidual> before;           ///< closures under the scan-matcher frames
+  std::vector<ClosureResidual> after;            ///< closures under the best trial's frames
+  slam::Scores scan_matcher;                     ///< eq. (10) and chi2 of the scan-matcher map
+  double seconds = 0.0;                          ///< wall-clock time of the optimisation
 };
 
 /// Called after each trial with the number of trials finished so far.
 using TrialObserver = std::function<void(std::size_t finished)>;
 
-/// Optimises the fragment set of a frontend run. Trial t is seeded with
-/// slam::trial_seed(settings.optimize.seed, t). Throws std::invalid_argument if the run has no
-/// loop closure (nothing to optimise) or the settings are invalid.
-MappingResult optimize_map(const FrontendResult& frontend, const MappingSettings& settings,
+/// Optimises the fragment set of a frontend run: settings.trials trials of
+/// settings.optimize.method, trial t seeded with slam::trial_seed(settings.optimize.seed, t).
+/// Throws std::invalid_argument if the set has no loop closure (nothing to optimise) or the
+/// settings are invalid.
+MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& settings,
                            const TrialObserver& observer = {});
 
 }  // namespace antslam::frontend

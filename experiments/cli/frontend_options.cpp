@@ -1,0 +1,77 @@
+#include "frontend_options.hpp"
+
+#include <numbers>
+
+namespace antslam::cli {
+
+void add_frontend_options(CLI::App& command, FrontendOptions& o) {
+  command
+      .add_option("--fragment-length", o.settings.fragmentation.length,
+                  "metres travelled per fragment")
+      ->capture_default_str();
+  command
+      .add_option("--samples", o.settings.fragmentation.samples,
+                  "samples M per fragment alignment (eq. 7)")
+      ->capture_default_str();
+  command
+      .add_option("--alignment", o.alignment,
+                  "alignment covariance: accumulated (eqs. 5-6 of every scan, composed) or "
+                  "exit-scan (the paper: eqs. 5-6 of the exit scan)")
+      ->check(CLI::IsMember({"accumulated", "exit-scan"}))
+      ->capture_default_str();
+  command
+      .add_option("--covariance-scale", o.settings.fragmentation.covariance_scale,
+                  "multiplies the alignment covariance")
+      ->capture_default_str();
+  command
+      .add_option("--temperature", o.settings.matcher.temperature,
+                  "scan-matcher likelihood temperature")
+      ->capture_default_str();
+  command.add_option("--fov", o.fov_degrees, "laser field of view, degrees (overrides the log)");
+  command.add_option("--first-beam", o.first_beam_degrees,
+                     "angle of the first beam, degrees (default -fov/2; overrides the log)");
+  command.add_option("--max-range", o.sensor.max_range,
+                     "laser maximum range, metres: readings at or above are no-returns");
+  command.add_option("--laser-offset", o.sensor.laser_offset,
+                     "laser position ahead of the robot origin, metres (overrides the log)");
+  command.add_flag("--no-closures", o.no_closures, "do not look for loop closures");
+  command
+      .add_option("--closure-min-score", o.settings.closure.min_score,
+                  "mean point likelihood a loop closure needs, in (0, 1]")
+      ->capture_default_str();
+  command
+      .add_option("--closure-max-second", o.settings.closure.max_second_ratio,
+                  "reject a closure if a separate peak scores this share of the best")
+      ->capture_default_str();
+  command
+      .add_option("--closure-temperature", o.settings.closure.temperature,
+                  "divides the loop-closure log-likelihood (widens N(mu_H, Sigma_H))")
+      ->capture_default_str();
+  command.add_option("--resolution", o.map.resolution, "map cell size, metres")
+      ->capture_default_str();
+}
+
+void resolve(FrontendOptions& o) {
+  constexpr double kRadians = std::numbers::pi / 180.0;
+  if (o.fov_degrees) o.sensor.field_of_view = *o.fov_degrees * kRadians;
+  if (o.first_beam_degrees) o.sensor.first_angle = *o.first_beam_degrees * kRadians;
+  if (o.alignment == "exit-scan")
+    o.settings.fragmentation.covariance = frontend::AlignmentCovariance::exit_scan;
+  o.settings.closure.enabled = !o.no_closures;
+}
+
+frontend::FrontendResult run_frontend(const frontend::LaserLog& log,
+                                      const frontend::FrontendSettings& settings,
+                                      const std::string& name, Progress& progress) {
+  frontend::Frontend frontend(settings, name);
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    frontend.add_scan(log.scans[i]);
+    progress.update("frontend: scan " + std::to_string(i + 1) + "/" +
+                    std::to_string(log.scans.size()) + ", fragments " +
+                    std::to_string(frontend.fragment_count()) + ", closures " +
+                    std::to_string(frontend.closure_count()));
+  }
+  return frontend.finish();
+}
+
+}  // namespace antslam::cli

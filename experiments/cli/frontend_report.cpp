@@ -1,0 +1,81 @@
+#include "frontend_report.hpp"
+
+namespace antslam::cli {
+
+using nlohmann::json;
+
+json pose_json(const slam::Pose2& p) { return json::array({p.x, p.y, p.theta}); }
+
+json covariance_json(const Eigen::Matrix3d& c) {
+  json rows = json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back(json::array({c(r, 0), c(r, 1), c(r, 2)}));
+  return rows;
+}
+
+json gaussian_json(const slam::Gaussian2& g) {
+  return {{"mean", pose_json(g.mean())}, {"covariance", covariance_json(g.covariance())}};
+}
+
+json frontend_input_json(const std::string& log_path, const frontend::LaserLog& log,
+                         const FrontendOptions& o) {
+  const frontend::FrontendSettings& s = o.settings;
+  return {{"log", log_path},
+          {"scans", log.scans.size()},
+          {"beams", log.scans.front().ranges.size()},
+          {"skipped_messages", log.skipped_messages},
+          {"settings",
+           {{"fragment_length_m", s.fragmentation.length},
+            {"samples", s.fragmentation.samples},
+            {"seed", s.fragmentation.seed},
+            {"alignment", o.alignment},
+            {"covariance_scale", s.fragmentation.covariance_scale},
+            {"temperature", s.matcher.temperature},
+            {"closures", s.closure.enabled},
+            {"closure_min_score", s.closure.min_score},
+            {"closure_max_second_ratio", s.closure.max_second_ratio},
+            {"closure_temperature", s.closure.temperature},
+            {"map_resolution_m", o.map.resolution}}}};
+}
+
+json frontend_result_json(const frontend::FrontendResult& r) {
+  json fragments = json::array();
+  for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+    const frontend::FragmentRecord& f = r.fragments[i];
+    const slam::Fragment& s = r.fragment_set.fragments[i];
+    json entry = {{"index", i},
+                  {"first_scan", f.first_scan},
+                  {"scans", f.scan_count},
+                  {"length_m", f.length},
+                  {"frame", pose_json(f.frame)},
+                  {"exit", pose_json(s.exit)},
+                  {"samples", s.samples.size()}};
+    if (s.alignment) entry["alignment"] = gaussian_json(*s.alignment);
+    fragments.push_back(entry);
+  }
+  json closures = json::array();
+  for (const slam::LoopClosure& c : r.fragment_set.closures)
+    closures.push_back({{"from", c.from},
+                        {"to", c.to},
+                        {"anchor", pose_json(c.anchor)},
+                        {"hypothesis", gaussian_json(c.hypothesis)}});
+  json attempts = json::array();
+  for (const frontend::ClosureAttempt& a : r.attempts)
+    attempts.push_back({{"from", a.from},
+                        {"to", a.to},
+                        {"ellipse_mahalanobis2", a.mahalanobis},
+                        {"prior", pose_json(a.prior)},
+                        {"prior_covariance", covariance_json(a.prior_covariance)},
+                        {"found", pose_json(a.match.pose)},
+                        {"score", a.match.score},
+                        {"second_score", a.match.second_score},
+                        {"accepted", a.match.accepted},
+                        {"reason", a.match.reason},
+                        {"seconds", a.seconds}});
+  return {
+      {"stats", {{"unmatched_scans", r.stats.unmatched}, {"recovered_scans", r.stats.recovered}}},
+      {"fragments", fragments},
+      {"closures", closures},
+      {"closure_attempts", attempts}};
+}
+
+}  // namespace antslam::cli

@@ -1,0 +1,98 @@
+#include "map_report.hpp"
+
+#include <cmath>
+
+#include "eval/report.hpp"
+#include "frontend_report.hpp"
+#include "slamgraph/refine.hpp"
+#include "slamgraph/trials.hpp"
+
+namespace antslam::cli {
+
+using nlohmann::json;
+
+namespace {
+
+json statistics_json(const slam::Statistics& s) {
+  return {{"mean", s.mean}, {"std", s.std}, {"min", s.min}, {"max", s.max}};
+}
+
+json scores_json(const slam::Scores& s) { return {{"weight", s.weight}, {"chi2", s.chi2}}; }
+
+json residual_json(const frontend::ClosureResidual& r) {
+  return {{"residual", pose_json(r.residual)}, {"mahalanobis", r.mahalanobis}};
+}
+
+}  // namespace
+
+json optimization_json(const slam::FragmentSet& set, const frontend::MappingSettings& settings,
+                       const frontend::MappingResult& r) {
+  const slam::OptimizeSettings& s = settings.optimize;
+  std::vector<double> weights, chi2, seconds;
+  json trials = json::array();
+  for (std::size_t t = 0; t < r.trials.size(); ++t) {
+    const slam::OptimizeResult& trial = r.trials[t];
+    weights.push_back(trial.scores.weight);
+    chi2.push_back(trial.scores.chi2);
+    seconds.push_back(trial.elapsed_s);
+    json entry = {{"trial", t},
+                  {"seed", slam::trial_seed(s.seed, t)},
+                  {"weight", trial.scores.weight},
+                  {"chi2", trial.scores.chi2},
+                  {"elapsed_s", trial.elapsed_s},
+                  {"time_to_best_s", trial.time_to_best_s}};
+    if (s.method == slam::Method::hybrid_nlopt)  // what the ants found before the refinement
+      entry["aco_weight"] = slam::path_weight(set, trial.choice);
+    trials.push_back(entry);
+  }
+  const slam::OptimizeResult& best = r.trials[r.best];
+  json alignments = json::array();
+  for (std::size_t i = 0; i < best.alignments.size(); ++i) {
+    const slam::Gaussian2& g = *set.fragments[i + 1].alignment;
+    const Eigen::Vector3d d = g.residual(best.alignments[i]);
+    const double m2 = d.dot(g.information() * d);
+    alignments.push_back({{"fragment", i + 1},
+                          {"pose", pose_json(best.alignments[i])},
+                          {"mahalanobis", std::sqrt(m2)},
+                          {"term", 1.0 - std::exp(-0.5 * m2)}});
+  }
+  json frames = json::array();
+  for (const slam::Pose2& f : best.frames) frames.push_back(pose_json(f));
+  return {{"method", slam::to_string(s.method)},
+          {"seed", s.seed},
+          {"trials", r.trials.size()},
+          {"iterations", s.iterations},
+          {"ants", s.aco.ants},
+          {"nlopt_algorithm", slam::to_string(s.refine.algorithm)},
+          {"graduated_refinement", s.refine.graduated},
+          {"scan_matcher", scores_json(r.scan_matcher)},
+          {"best_trial", r.best},
+          {"best", scores_json(best.scores)},
+          {"weight", statistics_json(slam::statistics(weights))},
+          {"chi2", statistics_json(slam::statistics(chi2))},
+          {"elapsed_s", statistics_json(slam::statistics(seconds))},
+          {"per_trial", trials},
+          {"frames", frames},
+          {"alignments", alignments}};
+}
+
+json closures_json(const slam::FragmentSet& set, const frontend::MappingResult& r) {
+  json out = json::array();
+  for (std::size_t c = 0; c < set.closures.size(); ++c)
+    out.push_back({{"from", set.closures[c].from},
+                   {"to", set.closures[c].to},
+                   {"anchor", pose_json(set.closures[c].anchor)},
+                   {"hypothesis", gaussian_json(set.closures[c].hypothesis)},
+                   {"scan_matcher", residual_json(r.before[c])},
+                   {"optimized", residual_json(r.after[c])},
+                   {"within_2_sigma", r.after[c].mahalanobis <= kClosureSigmas}});
+  return out;
+}
+
+json evaluation_json(const MapEvaluation& e) {
+  return {{"reference", e.reference},
+          {"scan_matcher", eval::to_json(e.scan_matcher)},
+          {"optimized", eval::to_json(e.optimized)}};
+}
+
+}  // namespace antslam::cli

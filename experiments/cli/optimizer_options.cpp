@@ -1,0 +1,56 @@
+#include "optimizer_options.hpp"
+
+namespace antslam::cli {
+
+void add_optimizer_options(CLI::App& command, OptimizerOptions& o) {
+  slam::OptimizeSettings& s = o.settings;
+  command
+      .add_option("--method", o.method,
+                  "as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, "
+                  "random or exhaustive")
+      ->capture_default_str();
+  command.add_option("--seed", s.seed, "seed of every random choice")->capture_default_str();
+  command.add_option("--iterations", s.iterations, "ACO iterations / random rounds")
+      ->capture_default_str();
+  command.add_option("--time-limit", s.time_limit_s, "wall-clock budget per trial, s (0 = none)")
+      ->capture_default_str();
+  command.add_option("--ants", s.aco.ants, "ants per iteration (0 = the variant's default)")
+      ->capture_default_str();
+  command.add_option("--rho", s.aco.rho, "evaporation rate (0 = the variant's default)")
+      ->capture_default_str();
+  command.add_option("--p0", s.aco.p0, "hybrid: probability of a uniform choice")
+      ->capture_default_str();
+  command.add_option("--q0", s.aco.q0, "acs: probability of the greedy choice")
+      ->capture_default_str();
+  command.add_option("--nlopt-algorithm", o.nlopt_algorithm, "lbfgs, slsqp or bobyqa")
+      ->capture_default_str();
+  command
+      .add_option("--bound-sigmas", s.refine.bound_sigmas,
+                  "NLopt box: samples' bounding box widened by this many sigmas")
+      ->capture_default_str();
+  command
+      .add_option("--max-evaluations", s.refine.max_evaluations,
+                  "NLopt evaluations per refinement (per stage when graduated)")
+      ->capture_default_str();
+  command
+      .add_option("--lbfgs-memory", s.refine.lbfgs_memory, "NLopt L-BFGS stored correction pairs")
+      ->capture_default_str();
+  command.add_flag("--no-graduated", o.no_graduated,
+                   "NLopt refinement of eq. 10 only, without the graduated (widened-kernel) one");
+  command.add_flag("--refine-each", s.refine_each_improvement,
+                   "hybrid+nlopt: refine every new global-best ant, not only the final one");
+  command.add_option("--ceres-iterations", s.ceres.max_iterations, "Ceres iterations")
+      ->capture_default_str();
+  command.add_option("--max-paths", s.max_exhaustive_paths, "exhaustive: refuse larger trees")
+      ->capture_default_str();
+}
+
+slam::OptimizeSettings optimize_settings(const OptimizerOptions& o) {
+  slam::OptimizeSettings s = o.settings;
+  s.method = slam::parse_method(o.method);
+  s.refine.algorithm = slam::parse_refine_algorithm(o.nlopt_algorithm);
+  s.refine.graduated = !o.no_graduated;
+  return s;
+}
+
+}  // namespace antslam::cli
