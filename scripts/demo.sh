@@ -6,6 +6,8 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)" --target antslam
-build/experiments/antslam tsp --instance data/tsplib/pr1002.tsp --variant mmas --local-search 3opt \
-  --time 10 --stop-at-optimum --tour-out results/demo/pr1002.tour \
-  --trace-csv results/demo/pr1002-trace.csv
+# AntSLAM on the bundled one-loop Malaga log (laser 0.78 m ahead of the robot origin, as the
+# log's header says): frontend, hybrid ACO + NLopt, corrected trajectory, maps, report.
+# (The former TSP demo is documented in docs/tsp.md.)
+build/experiments/antslam map data/laser/malaga-oneloop.clf --laser-offset 0.78 \
+  --out results/demo/malaga-oneloop
