@@ -48,7 +48,9 @@ for log in ["malaga-oneloop", "intel-subset", "mit-csail"]:
     ate = "-"
     if "evaluation" in r:
         ate = "%.3f" % r["evaluation"]["scan_matcher"]["ate"]["translation_m"]["rmse"]
-    worst = max(x["scan_matcher"]["mahalanobis"] for x in r["closures"])
-    print(f"| {log} | scan matcher alone | {r['optimization']['scan_matcher']['weight']:.2f} | - | "
-          f"{worst:.2f} | {ate} | - | {r['times']['frontend_s']:.1f} (frontend) |")
+    c = r["closures"]
+    worst = max(x["scan_matcher"]["mahalanobis"] for x in c)
+    within = sum(x["scan_matcher"]["mahalanobis"] <= 2 for x in c)
+    print(f"| {log} | scan matcher alone | {r['optimization']['scan_matcher']['weight']:.2f} | "
+          f"{within} of {len(c)} | {worst:.2f} | {ate} | - | {r['times']['frontend_s']:.1f} (frontend) |")
 EOF
