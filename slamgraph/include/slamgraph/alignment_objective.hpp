@@ -60,8 +60,7 @@ class AlignmentObjective {
   };
 
   /// Adds s^2 (1 - exp(-m/(2 s^2))) and m to `scores`; returns dW/dr.
-  Eigen::Vector3d add_term(const Term& term, const Eigen::Vector3d& residual,
-                           Scores& scores) const;
+  Eigen::Vector3d add_term(const Term& term, const Eigen::Vector3d& residual, Scores& scores) const;
 
   double width_ = 1.0;  // kernel width s
   std::vector<Term> alignments_;

@@ -77,8 +77,7 @@ class Refiner {
   /// NLopt from x in the box [lower, upper] on the objective at its current kernel width, with
   /// at most `seconds` (0 = no limit); returns the best point evaluated.
   std::vector<double> minimise(const std::vector<double>& x, const std::vector<double>& lower,
-                               const std::vector<double>& upper, double seconds,
-                               int& evaluations);
+                               const std::vector<double>& upper, double seconds, int& evaluations);
 
   AlignmentObjective objective_;
   RefineSettings settings_;
