@@ -1,5 +1,7 @@
 #include "optimizer_options.hpp"
 
+#include "tsp_options_command.hpp"  // non_negative_integer
+
 namespace antslam::cli {
 
 void add_optimizer_options(CLI::App& command, OptimizerOptions& o) {
@@ -9,12 +11,16 @@ void add_optimizer_options(CLI::App& command, OptimizerOptions& o) {
                   "as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, "
                   "random or exhaustive")
       ->capture_default_str();
-  command.add_option("--seed", s.seed, "seed of every random choice")->capture_default_str();
+  command.add_option("--seed", s.seed, "seed of every random choice")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   command.add_option("--iterations", s.iterations, "ACO iterations / random rounds")
+      ->check(non_negative_integer())
       ->capture_default_str();
   command.add_option("--time-limit", s.time_limit_s, "wall-clock budget per trial, s (0 = none)")
       ->capture_default_str();
   command.add_option("--ants", s.aco.ants, "ants per iteration (0 = the variant's default)")
+      ->check(non_negative_integer())
       ->capture_default_str();
   command.add_option("--rho", s.aco.rho, "evaporation rate (0 = the variant's default)")
       ->capture_default_str();
@@ -42,6 +48,7 @@ void add_optimizer_options(CLI::App& command, OptimizerOptions& o) {
   command.add_option("--ceres-iterations", s.ceres.max_iterations, "Ceres iterations")
       ->capture_default_str();
   command.add_option("--max-paths", s.max_exhaustive_paths, "exhaustive: refuse larger trees")
+      ->check(non_negative_integer())
       ->capture_default_str();
 }
 

@@ -16,6 +16,7 @@ slam::OptimizeSettings default_mapping_optimizer() {
 
 void validate(const MappingSettings& s) {
   if (s.trials < 1) throw std::invalid_argument("mapping: trials must be >= 1");
+  slam::validate(s.optimize);
 }
 
 std::vector<ClosureResidual> closure_residuals(const slam::FragmentSet& set,

@@ -11,14 +11,9 @@
 
 namespace antslam::slam {
 
-namespace {
+constexpr std::size_t kMaxAnts = 100000;
 
-constexpr std::array kMethods{Method::ant_system,   Method::elitist, Method::rank_based,
-                              Method::acs,          Method::mmas,    Method::hybrid,
-                              Method::hybrid_nlopt, Method::nlopt,   Method::ceres,
-                              Method::ceres_robust, Method::random,  Method::exhaustive};
-
-void check_settings(const FragmentSet& set, const OptimizeSettings& s) {
+void validate(const OptimizeSettings& s) {
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("optimize: ") + what);
   };
@@ -31,6 +26,20 @@ void check_settings(const FragmentSet& set, const OptimizeSettings& s) {
   require(p.alpha >= 0.0 && std::isfinite(p.alpha), "alpha must be finite and >= 0");
   require(p.glob_best_freq >= 1, "globBestFreq must be >= 1");
   require(p.tau_init > 0.0 && p.tau_max >= p.tau_init, "need 0 < tau_init <= tau_max");
+  require(p.ants <= kMaxAnts, "ants must be <= 100000 (0: the variant's default)");
+  require(s.ceres.max_iterations > 0, "ceres iterations must be positive");
+  validate(s.refine);
+}
+
+namespace {
+
+constexpr std::array kMethods{Method::ant_system,   Method::elitist, Method::rank_based,
+                              Method::acs,          Method::mmas,    Method::hybrid,
+                              Method::hybrid_nlopt, Method::nlopt,   Method::ceres,
+                              Method::ceres_robust, Method::random,  Method::exhaustive};
+
+void check_settings(const FragmentSet& set, const OptimizeSettings& s) {
+  validate(s);
   if (!s.initial.empty() && s.initial.size() != set.layer_count())
     throw std::invalid_argument("optimize: initial has " + std::to_string(s.initial.size()) +
                                 " alignments, expected " + std::to_string(set.layer_count()));

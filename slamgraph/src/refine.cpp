@@ -69,8 +69,7 @@ RefineAlgorithm parse_refine_algorithm(std::string_view name) {
                               "' (expected lbfgs, slsqp or bobyqa)");
 }
 
-Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
-    : objective_(set), settings_(settings) {
+void validate(const RefineSettings& settings) {
   if (!(settings.bound_sigmas >= 0.0) || !std::isfinite(settings.bound_sigmas))
     throw std::invalid_argument("refine: bound_sigmas must be finite and >= 0");
   if (settings.max_evaluations <= 0 || settings.lbfgs_memory <= 0)
@@ -79,6 +78,11 @@ Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
     throw std::invalid_argument("refine: tolerance and time limit must be >= 0");
   if (!(settings.graduation_factor > 1.0) || !std::isfinite(settings.graduation_factor))
     throw std::invalid_argument("refine: graduation_factor must be a finite number > 1");
+}
+
+Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
+    : objective_(set), settings_(settings) {
+  validate(settings);
   for (std::size_t i = 1; i < set.fragments.size(); ++i) {
     const Gaussian2& g = *set.fragments[i].alignment;
     Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();

@@ -140,5 +140,21 @@ TEST(Mapping, RejectsASetWithoutClosuresAndZeroTrials) {
   EXPECT_THROW(optimize_map(set, quick_settings()), std::invalid_argument);
 }
 
+TEST(Mapping, ValidatesTheOptimizerBeforeAnyWork) {
+  MappingSettings s;
+  EXPECT_NO_THROW(validate(s));
+  s.optimize.aco.rho = 2.0;
+  EXPECT_THROW(validate(s), std::invalid_argument);
+  s = {};
+  s.optimize.aco.ants = 1'000'000;
+  EXPECT_THROW(validate(s), std::invalid_argument);
+  s = {};
+  s.optimize.refine.max_evaluations = 0;
+  EXPECT_THROW(validate(s), std::invalid_argument);
+  s = {};
+  s.optimize.iterations = 0;
+  EXPECT_THROW(validate(s), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace antslam::frontend

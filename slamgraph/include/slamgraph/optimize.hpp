@@ -89,6 +89,10 @@ struct OptimizeResult {
   std::vector<ConvergencePoint> convergence;  ///< one point per improvement
 };
 
+/// Throws std::invalid_argument naming the first nonsensical field (engine, NLopt, Ceres); the
+/// checks that need no fragment set, so that a pipeline can run them before building one.
+void validate(const OptimizeSettings& settings);
+
 /// Runs settings.method on the set. Throws std::invalid_argument naming the problem for an
 /// invalid set or settings (and for exhaustive search on too large a tree).
 OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings,

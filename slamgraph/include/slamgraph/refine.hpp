@@ -52,6 +52,9 @@ struct RefineSettings {
   double graduation_factor = 2.0;  ///< kernel width divided by this per stage (> 1)
 };
 
+/// Throws std::invalid_argument naming the first nonsensical field.
+void validate(const RefineSettings& settings);
+
 struct RefineResult {
   std::vector<Pose2> alignments;  ///< refined X_2..X_N
   Scores start;                   ///< objectives at the start
