@@ -56,16 +56,22 @@ TEST(AlignmentObjective, GradientMatchesFiniteDifferences) {
   }
 }
 
-// Hand-computed: one alignment, one closure on the same pair with anchor = identity, unit
-// covariances. At X = (1, 0, 0) with mu = (0, 0, 0) and H = (2, 0, 0): m_align = 1,
-// m_closure = 1, W = 2 (1 - e^-0.5), dW/dx = e^-0.5 * (1) + e^-0.5 * (-1) = 0.
-TEST(AlignmentObjective, HandComputedValueAndGradient) {
+/// One alignment with mu = (0, 0, 0) and one closure on the same pair with anchor = identity and
+/// H = (2, 0, 0), unit covariances.
+FragmentSet one_alignment_one_closure() {
   FragmentSet set;
   set.fragments.resize(2);
   set.fragments[1].alignment = Gaussian2(Pose2{}, Eigen::Matrix3d::Identity());
   set.fragments[1].samples = {Pose2{}};
   set.closures = {{0, 1, Pose2{}, Gaussian2(Pose2{2.0, 0.0, 0.0}, Eigen::Matrix3d::Identity())}};
-  AlignmentObjective objective(set);
+  return set;
+}
+
+// Hand-computed: one alignment, one closure on the same pair with anchor = identity, unit
+// covariances. At X = (1, 0, 0) with mu = (0, 0, 0) and H = (2, 0, 0): m_align = 1,
+// m_closure = 1, W = 2 (1 - e^-0.5), dW/dx = e^-0.5 * (1) + e^-0.5 * (-1) = 0.
+TEST(AlignmentObjective, HandComputedValueAndGradient) {
+  AlignmentObjective objective(one_alignment_one_closure());
   std::vector<double> g(3);
   const Scores s = objective.evaluate(std::vector<double>{1.0, 0.0, 0.0}, g);
   EXPECT_NEAR(s.weight, 2.0 * (1.0 - std::exp(-0.5)), 1e-15);
@@ -80,12 +86,7 @@ TEST(AlignmentObjective, HandComputedValueAndGradient) {
 // The same set at kernel width s = 2: each term is s^2 (1 - exp(-m / (2 s^2))) and its gradient
 // exp(-m / (2 s^2)) Omega r. At X = (0.5, 0, 0): m_align = 0.25, m_closure = 2.25.
 TEST(AlignmentObjective, HandComputedWidenedValueAndGradient) {
-  FragmentSet set;
-  set.fragments.resize(2);
-  set.fragments[1].alignment = Gaussian2(Pose2{}, Eigen::Matrix3d::Identity());
-  set.fragments[1].samples = {Pose2{}};
-  set.closures = {{0, 1, Pose2{}, Gaussian2(Pose2{2.0, 0.0, 0.0}, Eigen::Matrix3d::Identity())}};
-  AlignmentObjective objective(set);
+  AlignmentObjective objective(one_alignment_one_closure());
   objective.set_kernel_width(2.0);
   std::vector<double> g(3);
   const Scores s = objective.evaluate(std::vector<double>{0.5, 0.0, 0.0}, g);
