@@ -14,5 +14,8 @@ void add_frontend_command(CLI::App& app);
 void add_tsp_command(CLI::App& app);
 void add_tsp_experiment_command(CLI::App& app);
 void add_tsp_generate_command(CLI::App& app);
+void add_odometry_command(CLI::App& app);
+void add_simulate_odometry_command(CLI::App& app);
+void add_tinyslam_command(CLI::App& app);
 
 }  // namespace antslam::cli

@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
   antslam::cli::add_tsp_command(app);
   antslam::cli::add_tsp_experiment_command(app);
   antslam::cli::add_tsp_generate_command(app);
+  antslam::cli::add_odometry_command(app);
+  antslam::cli::add_simulate_odometry_command(app);
+  antslam::cli::add_tinyslam_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
