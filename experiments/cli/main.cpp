@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   antslam::cli::add_odometry_command(app);
   antslam::cli::add_simulate_odometry_command(app);
   antslam::cli::add_tinyslam_command(app);
+  antslam::cli::add_fragment_set_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
