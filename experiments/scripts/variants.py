@@ -6,8 +6,9 @@ the figures variants-weights.png and variants-convergence.png into the results f
     /usr/bin/python3 experiments/scripts/variants.py [--quick] [--out results/variants]
         [--set NAME=FRAGMENT_SET.json ...] [--publish]
 
-Sets: the synthetic presets N = 9, 15, 24 (data/fragment-sets/paperN.json) and every --set
-given (e.g. the fragment-set.json that `antslam map` writes for a real log).
+Sets: the synthetic presets N = 9, 15, 24 (data/fragment-sets/paperN.json), two from real logs
+made here with `antslam fragment-set` (malaga: the one-loop log; aces: the corrected aces log
+with `antslam simulate-odometry --seed 1` noise), and every --set given.
 Budgets: 'evaluations' = 20 ants x 3000 iterations (random: 60000 uniform paths; Ceres is one
 shot; hybrid+nlopt adds its NLopt evaluations); 'time' = a wall-clock limit per trial (the ACO
 stops there, hybrid+nlopt refines after it). Trials run one at a time on one thread, so each
@@ -126,6 +127,19 @@ def plot_convergence(args, results, evaluations):
     save_figure(args, fig, "variants-convergence")
 
 
+def real_sets(args):
+    """Fragment sets of the one-loop log and of a noise-corrupted corrected log."""
+    laser = os.path.join(DATA, "laser")
+    work = os.path.join(args.out, "sets")
+    malaga, aces = os.path.join(work, "malaga.json"), os.path.join(work, "aces.json")
+    progress("fragment sets of malaga-oneloop and of aces (simulated odometry, seed 1)")
+    antslam(args, "fragment-set", os.path.join(laser, "malaga-oneloop.clf"), "-o", malaga)
+    antslam(args, "simulate-odometry", os.path.join(laser, "corrected", "aces-corrected.log.gz"),
+            "--out", os.path.join(work, "aces"), "--seed", 1)
+    antslam(args, "fragment-set", os.path.join(work, "aces", "log.clf"), "-o", aces)
+    return [("malaga", malaga), ("aces", aces)]
+
+
 def main():
     p = parser(__doc__, "variants")
     p.add_argument("--set", action="append", default=[], metavar="NAME=PATH",
@@ -137,7 +151,7 @@ def main():
     budget_args, evaluations, seconds = budgets(args)
     sets = [(f"paper{n}", os.path.join(DATA, "fragment-sets", f"paper{n}.json"))
             for n in (9, 15, 24)]
-    sets += [tuple(s.split("=", 1)) for s in args.set]
+    sets += real_sets(args) + [tuple(s.split("=", 1)) for s in args.set]
     text = [header(args, "experiments/scripts/variants.py" +
                    "".join(f" --set {s}" for s in args.set)),
             f"{args.trials} trials per method and budget; evaluation budget {evaluations} paths "
