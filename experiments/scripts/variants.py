@@ -168,8 +168,8 @@ def main():
             table.append([method, pm(e["weight"]), f"{e['weight']['min']:.3f}",
                           f"{1e3 * e['elapsed']['mean']:.1f}", pm(t["weight"]),
                           f"{len(hits)}/{len(e['traces'])}",
-                          f"{median([h[0] for h in hits]):.0f}",
-                          f"{1e3 * median([h[1] for h in hits]):.1f}"])
+                          f"{median([h[0] for h in hits]):.0f}" if hits else "-",
+                          f"{1e3 * median([h[1] for h in hits]):.1f}" if hits else "-"])
         text.append(f"### {name} (target weight {target:.3f})\n\n")
         text.append(markdown_table(
             ["method", "weight, evaluation budget", "best", "ms per trial",
