@@ -117,6 +117,7 @@ def main():
     args.trials = args.trials or (10 if args.quick else 100)
     args.iterations = 300 if args.quick else 3000
     check_program(args)
+    head = header(args, "experiments/scripts/fig5.py")  # the load before the runs
     names = ["malaga", "aces"] if args.quick else ["malaga", "aces", "intel"]
     rows, table = [], []
     for name in names:
@@ -130,7 +131,7 @@ def main():
     write_csv(os.path.join(args.out, "fig5.csv"), ["dataset", "seed", "weight", "ate_rmse_m"],
               rows)
     with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(header(args, "experiments/scripts/fig5.py"))
+        f.write(head)
         f.write(f"AntSLAM hybrid, {args.iterations} iterations, 20 ants.\n\n")
         f.write(markdown_table(["dataset", "trials", "final weight", "ms per trial",
                                 "ATE RMSE (m)"], table))

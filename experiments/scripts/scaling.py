@@ -49,6 +49,7 @@ def main():
     args = p.parse_args()
     args.repeats = args.repeats or (1 if args.quick else 3)
     check_program(args)
+    head = header(args, "experiments/scripts/scaling.py")  # the load before the runs
     os.makedirs(os.path.join(args.out, "runs"), exist_ok=True)
     progress("intel fragment set (simulate-odometry --seed 1, fragment-set)")
     bench = os.path.join(args.out, "intel")
@@ -99,7 +100,7 @@ def main():
     ax.legend(fontsize=7)
     save_figure(args, fig, "scaling")
     with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(header(args, "experiments/scripts/scaling.py"))
+        f.write(head)
         f.write(f"{args.repeats} repeat(s) per point.\n\n")
         f.write(markdown_table(["workload", "threads", "median s", "range s", "speedup",
                                 "efficiency", "identical results", "load before"], table))

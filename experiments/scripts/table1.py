@@ -71,6 +71,7 @@ def main():
     args = p.parse_args()
     args.runs = args.runs or (2 if args.quick else 10)
     check_program(args)
+    head = header(args, "experiments/scripts/table1.py")  # the load before the runs
     datasets = [(name, None, None) for name in CORRECTED] + [(r[0], r, None) for r in RAW]
     if args.datasets:
         datasets = [d for d in datasets if d[0] in args.datasets.split(",")]
@@ -108,7 +109,7 @@ def main():
                "relations_translation_mean_m"], rows)
     plot(args, rows, [d[0] for d in datasets])
     with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(header(args, "experiments/scripts/table1.py"))
+        f.write(head)
         f.write(markdown_table(["dataset", "path (m)", "method", "runs", "ATE RMSE (m)",
                                 "ATE rot RMSE (deg)", "relations transl. (m)"], table))
     progress(f"wrote {args.out}/table1.csv, table.md, table1.png")
