@@ -152,8 +152,7 @@ def main():
     sets = [(f"paper{n}", os.path.join(DATA, "fragment-sets", f"paper{n}.json"))
             for n in (9, 15, 24)]
     sets += real_sets(args) + [tuple(s.split("=", 1)) for s in args.set]
-    text = [header(args, "experiments/scripts/variants.py" +
-                   "".join(f" --set {s}" for s in args.set)),
+    text = [header(args, "experiments/scripts/variants.py"),
             f"{args.trials} trials per method and budget; evaluation budget {evaluations} paths "
             f"({ANTS} ants); time budget {seconds} s per trial.\n\n"]
     results, all_rows = {}, []
