@@ -110,9 +110,29 @@ def main():
     plot(args, rows, [d[0] for d in datasets])
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write(head)
+        f.write("ATE RMSE (m), mean +- std over runs; lowest mean in bold.\n\n")
+        f.write(matrix(rows, [d[0] for d in datasets], 4) + "\n")
+        f.write("Relations metric, mean translational error (m):\n\n")
+        f.write(matrix([r for r in rows if r[6] != ""], [r[0] for r in RAW if r[3]], 6, 3) + "\n")
         f.write(markdown_table(["dataset", "path (m)", "method", "runs", "ATE RMSE (m)",
                                 "ATE rot RMSE (deg)", "relations transl. (m)"], table))
     progress(f"wrote {args.out}/table1.csv, table.md, table1.png")
+
+
+def matrix(rows, names, column, digits=2):
+    """Datasets x methods: mean +- std of rows[column]; the lowest mean of a dataset in bold."""
+    table = []
+    for name in names:
+        cells = {m: stats([r[column] for r in rows if r[0] == name and r[1] == m])
+                 for m in METHODS}
+        if all(c["n"] == 0 for c in cells.values()):
+            continue
+        best = min(cells[m]["mean"] for m in METHODS if cells[m]["n"])
+        length = next(r[3] for r in rows if r[0] == name)
+        table.append([f"{name} ({length:.0f} m)"] +
+                     [f"**{pm(cells[m], digits)}**" if cells[m]["mean"] == best else pm(cells[m], digits)
+                      for m in METHODS])
+    return markdown_table(["dataset (path)"] + METHODS, table)
 
 
 def plot(args, rows, names):
