@@ -140,6 +140,18 @@ def real_sets(args):
     return [("malaga", malaga), ("aces", aces)]
 
 
+def summary(rows, names, budget):
+    """Sets x methods at one budget (rows as in variants.csv)."""
+    table = []
+    for name in names:
+        cells = {r[2]: r for r in rows if r[0] == name and r[1] == budget}
+        best = min(cells[m][4] for m in METHODS)
+        table.append([name] + [(f"**{cells[m][4]:.2f} +- {cells[m][5]:.2f}**"
+                                if cells[m][4] <= best * (1 + 1e-9) else
+                                f"{cells[m][4]:.2f} +- {cells[m][5]:.2f}") for m in METHODS])
+    return markdown_table(["set"] + METHODS, table)
+
+
 def main():
     p = parser(__doc__, "variants")
     p.add_argument("--set", action="append", default=[], metavar="NAME=PATH",
@@ -181,7 +193,11 @@ def main():
     plot_weights(args, results, budget_args)
     plot_convergence(args, results, evaluations)
     with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write("".join(text))
+        f.write(text[0] + text[1])
+        for budget in budget_args:
+            f.write(f"Final weight (eq. 10) at the equal {budget} budget, mean +- std; lowest "
+                    "in bold:\n\n" + summary(all_rows, [name for name, _ in sets], budget) + "\n")
+        f.write("".join(text[2:]))
     progress(f"wrote {args.out}/variants.csv, table.md, variants-weights.png, "
              "variants-convergence.png")
 
