@@ -15,5 +15,9 @@ void add_map_command(CLI::App& app);
 void add_tsp_command(CLI::App& app);
 void add_tsp_experiment_command(CLI::App& app);
 void add_tsp_generate_command(CLI::App& app);
+void add_odometry_command(CLI::App& app);
+void add_simulate_odometry_command(CLI::App& app);
+void add_tinyslam_command(CLI::App& app);
+void add_fragment_set_command(CLI::App& app);
 
 }  // namespace antslam::cli

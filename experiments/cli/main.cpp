@@ -20,6 +20,10 @@ int main(int argc, char** argv) {
   antslam::cli::add_tsp_command(app);
   antslam::cli::add_tsp_experiment_command(app);
   antslam::cli::add_tsp_generate_command(app);
+  antslam::cli::add_odometry_command(app);
+  antslam::cli::add_simulate_odometry_command(app);
+  antslam::cli::add_tinyslam_command(app);
+  antslam::cli::add_fragment_set_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

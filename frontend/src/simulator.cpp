@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "frontend/odometry_noise.hpp"
 #include "slamgraph/gaussian2.hpp"
 
 namespace antslam::frontend {
@@ -152,23 +153,13 @@ SimulatedRun simulate_run(const World& world, std::span<const Eigen::Vector2d> w
   run.log.source = "simulation";
   run.log.flaser_geometry.field_of_view = settings.field_of_view;
   run.log.flaser_geometry.max_range = settings.max_range;
-  slam::Pose2 odometry = path.front();
+  const OdometryNoise noise{settings.odometry_noise_linear, settings.odometry_noise_angular,
+                            settings.odometry_noise_drift, settings.heading_bias};
+  const std::vector<slam::Pose2> odometry = noisy_odometry(path, noise, odometry_rng);
   for (std::size_t i = 0; i < path.size(); ++i) {
-    if (i > 0) {
-      const slam::Pose2 u = slam::between(path[i - 1], path[i]);
-      const double distance = std::hypot(u.x, u.y);
-      const double linear = settings.odometry_noise_linear * distance;
-      const double angular = settings.odometry_noise_angular * std::abs(u.theta) +
-                             settings.odometry_noise_drift * distance;
-      const slam::Pose2 noisy{u.x + linear * slam::standard_normal(odometry_rng),
-                              u.y + 0.5 * linear * slam::standard_normal(odometry_rng),
-                              u.theta + angular * slam::standard_normal(odometry_rng) +
-                                  settings.heading_bias * distance};
-      odometry = odometry * noisy;
-    }
     LaserScan scan = simulate_scan(world, path[i], settings, scan_rng);
     scan.stamp = static_cast<double>(i) * settings.scan_period;
-    scan.odometry = odometry;
+    scan.odometry = odometry[i];
     run.log.scans.push_back(std::move(scan));
     run.truth.push_back({static_cast<double>(i) * settings.scan_period, path[i]});
   }

@@ -1,0 +1,50 @@
+// antslam odometry LOG --out FILE: the odometry-only baseline. The robot poses a CARMEN log's
+// scans carry (the FLASER odom fields, ROBOTLASER1's robot pose) as a TUM trajectory.
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "cli/atomic_file.hpp"
+#include "commands.hpp"
+#include "frontend/laser_log.hpp"
+#include "slamgraph/trajectory.hpp"
+
+namespace antslam::cli {
+
+namespace {
+
+struct OdometryOptions {
+  std::filesystem::path log;
+  std::filesystem::path out;
+};
+
+void run(const OdometryOptions& o) {
+  const frontend::LaserLog log = frontend::read_carmen_file(o.log);
+  slam::Trajectory odometry;
+  double length = 0.0;
+  for (const frontend::LaserScan& scan : log.scans) {
+    if (!odometry.empty())
+      length += (scan.odometry.translation() - odometry.back().pose.translation()).norm();
+    odometry.push_back({scan.stamp, scan.odometry});
+  }
+  write_atomically(o.out, [&](std::ostream& out) { slam::write_tum(out, odometry); });
+  std::printf("%s: %zu scans, odometry path %.1f m; wrote %s\n", o.log.string().c_str(),
+              odometry.size(), length, o.out.string().c_str());
+}
+
+}  // namespace
+
+void add_odometry_command(CLI::App& app) {
+  auto options = std::make_shared<OdometryOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "odometry", "Write the odometry of a CARMEN log's scans as a TUM trajectory (baseline)");
+  cmd->add_option("log", options->log, "CARMEN log (.clf/.log, may be gzipped)")->required();
+  cmd->add_option("-o,--out", options->out, "TUM trajectory to write")->required();
+  cmd->callback([options] { run(*options); });
+}
+
+}  // namespace antslam::cli

@@ -1,0 +1,25 @@
+#pragma once
+// The laser geometry options of the commands that read CARMEN logs (--fov, --first-beam,
+// --max-range, --laser-offset), registered once.
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+
+#include "frontend/laser_log.hpp"
+
+namespace antslam::cli {
+
+struct SensorOptions {
+  std::optional<double> fov_degrees;         ///< degrees, --fov
+  std::optional<double> first_beam_degrees;  ///< degrees, --first-beam
+  std::optional<double> max_range;           ///< metres, --max-range
+  std::optional<double> laser_offset;        ///< metres, --laser-offset
+
+  /// The overrides for frontend::read_carmen_file (angles in radians).
+  frontend::SensorOverrides overrides() const;
+};
+
+void add_sensor_options(CLI::App& command, SensorOptions& options);
+
+}  // namespace antslam::cli

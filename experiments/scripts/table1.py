@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Paper-2 Table I: datasets x methods, trajectory ATE RMSE (after rigid SE(2) alignment) mean +-
+std over runs, with the reference path length; plus the relations metric (Kuemmerle et al. 2009)
+for Intel. Writes table1.csv (one row per dataset, method and run), table.md and table1.png.
+
+    /usr/bin/python3 experiments/scripts/table1.py [--quick] [--runs 10] [--out results/table1]
+        [--publish]
+
+Datasets: the GMapping-corrected logs (aces, intel, freiburg-079, csail) turned into benchmarks
+by `antslam simulate-odometry` (run r: noise seed r, reference = the corrected poses), and the raw
+logs with a reference (mit-csail, intel-subset; the optimizer's and tinySLAM's seed vary).
+Methods: odometry only; the scan matcher alone (the frontend's pre-solution); tinySLAM; AntSLAM
+(hybrid) and AntSLAM + NLopt and Ceres least squares on the same fragment set
+(`antslam fragment-set` then `antslam optimize --tum-out`: each scan's corrected pose is its
+fragment's optimized frame times its pose in the fragment).
+"""
+import os
+
+from experiment_common import (DATA, antslam, check_program, header, markdown_table, parser,
+                               plt, pm, progress, read_json, save_figure, stats, write_csv)
+
+LASER = os.path.join(DATA, "laser")
+CORRECTED = ["aces", "intel", "freiburg-079", "csail"]
+RAW = [("mit-csail", "mit-csail.clf", "mit-csail.ref.tum", None),
+       ("intel-subset", "intel-subset.clf", "intel-subset.ref.tum", "intel.relations")]
+OPTIMIZERS = ["hybrid", "hybrid+nlopt", "ceres"]
+METHODS = ["odometry", "scan-matcher", "tinyslam"] + OPTIMIZERS
+
+
+def path_length(tum):
+    poses = [tuple(map(float, line.split()[1:3])) for line in open(tum) if line[0] != "#"]
+    return sum(((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5 for a, b in zip(poses, poses[1:]))
+
+
+def score(args, estimate, reference, relations):
+    out = estimate + ".eval.json"
+    extra = ["--relations", relations] if relations else []
+    antslam(args, "eval", estimate, reference, "--json", out, *extra)
+    e = read_json(out)
+    rel = e.get("relations")
+    return (e["ate"]["translation_m"]["rmse"], e["ate"]["rotation_deg"]["rmse"],
+            rel["translation_m"]["mean"] if rel else None)
+
+
+def trajectories(args, log, work, seed, frontend_done):
+    """Every method's trajectory of one run: {method: TUM path}."""
+    tums = {"odometry": os.path.join(work, "odometry.tum"),
+            "scan-matcher": os.path.join(work, "scan-matcher.tum")}
+    fragment_set = os.path.join(work, "fragment-set.json")
+    if not frontend_done:
+        antslam(args, "odometry", log, "-o", tums["odometry"])
+        antslam(args, "fragment-set", log, "-o", fragment_set, "--seed", seed,
+                "--trajectory", tums["scan-matcher"])
+    tiny = os.path.join(work, f"tinyslam-{seed}")
+    antslam(args, "tinyslam", log, "--out", tiny, "--seed", seed)
+    tums["tinyslam"] = os.path.join(tiny, "trajectory.tum")
+    for method in OPTIMIZERS:
+        prefix = os.path.join(work, f"{method}-{seed}")
+        antslam(args, "optimize", fragment_set, "--method", method, "--seed", seed,
+                "--iterations", 300 if args.quick else 3000, "-o", prefix,
+                "--tum-out", prefix + ".tum")
+        tums[method] = prefix + ".tum"
+    return tums
+
+
+def main():
+    p = parser(__doc__, "table1")
+    p.add_argument("--runs", type=int, default=None, help="runs per dataset (10; quick 2)")
+    p.add_argument("--datasets", default=None,
+                   help="comma-separated subset of " + ",".join(CORRECTED + [r[0] for r in RAW]))
+    args = p.parse_args()
+    args.runs = args.runs or (2 if args.quick else 10)
+    check_program(args)
+    head = header(args, "experiments/scripts/table1.py")  # the load before the runs
+    datasets = [(name, None, None) for name in CORRECTED] + [(r[0], r, None) for r in RAW]
+    if args.datasets:
+        datasets = [d for d in datasets if d[0] in args.datasets.split(",")]
+    rows, table, lengths = [], [], {}
+    for name, raw, _ in datasets:
+        results = {m: [] for m in METHODS}
+        for run in range(1, args.runs + 1):
+            progress(f"{name}: run {run}/{args.runs}")
+            if raw:  # one frontend per raw log; the optimizer's and tinySLAM's seeds vary
+                work = os.path.join(args.out, "runs", name)
+                os.makedirs(work, exist_ok=True)
+                log, reference = os.path.join(LASER, raw[1]), os.path.join(LASER, raw[2])
+                relations = os.path.join(LASER, raw[3]) if raw[3] else None
+                tums = trajectories(args, log, work, run, run > 1)
+            else:  # a fresh noisy odometry (and fragment set) per run
+                work = os.path.join(args.out, "runs", f"{name}-{run}")
+                antslam(args, "simulate-odometry",
+                        os.path.join(LASER, "corrected", f"{name}-corrected.log.gz"),
+                        "--out", work, "--seed", run)
+                log, reference = os.path.join(work, "log.clf"), os.path.join(work, "reference.tum")
+                relations = None
+                tums = trajectories(args, log, work, run, False)
+            lengths[name] = path_length(reference)
+            for method, tum in tums.items():
+                ate, rot, rel = score(args, tum, reference, relations)
+                results[method].append((ate, rot, rel))
+                rows.append([name, method, run, lengths[name], ate, rot, "" if rel is None else rel])
+        for method in METHODS:
+            ate = stats([r[0] for r in results[method]])
+            rel = stats([r[2] for r in results[method]])
+            table.append([name, f"{lengths[name]:.0f}", method, ate["n"], pm(ate),
+                          pm(stats([r[1] for r in results[method]]), 2), pm(rel)])
+    write_csv(os.path.join(args.out, "table1.csv"),
+              ["dataset", "method", "run", "path_length_m", "ate_rmse_m", "ate_rot_rmse_deg",
+               "relations_translation_mean_m"], rows)
+    plot(args, rows, [d[0] for d in datasets])
+    with open(os.path.join(args.out, "table.md"), "w") as f:
+        f.write(head)
+        f.write("ATE RMSE (m), mean +- std over runs; lowest mean in bold.\n\n")
+        f.write(matrix(rows, [d[0] for d in datasets], 4) + "\n")
+        f.write("Relations metric, mean translational error (m):\n\n")
+        f.write(matrix([r for r in rows if r[6] != ""], [r[0] for r in RAW if r[3]], 6, 3) + "\n")
+        f.write(markdown_table(["dataset", "path (m)", "method", "runs", "ATE RMSE (m)",
+                                "ATE rot RMSE (deg)", "relations transl. (m)"], table))
+    progress(f"wrote {args.out}/table1.csv, table.md, table1.png")
+
+
+def matrix(rows, names, column, digits=2):
+    """Datasets x methods: mean +- std of rows[column]; the lowest mean of a dataset in bold."""
+    table = []
+    for name in names:
+        cells = {m: stats([r[column] for r in rows if r[0] == name and r[1] == m])
+                 for m in METHODS}
+        if all(c["n"] == 0 for c in cells.values()):
+            continue
+        best = min(cells[m]["mean"] for m in METHODS if cells[m]["n"])
+        length = next(r[3] for r in rows if r[0] == name)
+        table.append([f"{name} ({length:.0f} m)"] +
+                     [f"**{pm(cells[m], digits)}**" if cells[m]["mean"] == best else pm(cells[m], digits)
+                      for m in METHODS])
+    return markdown_table(["dataset (path)"] + METHODS, table)
+
+
+def plot(args, rows, names):
+    fig, ax = plt.subplots(figsize=(1.6 * len(names) + 2, 4))
+    width = 0.8 / len(METHODS)
+    for k, method in enumerate(METHODS):
+        s = [stats([r[4] for r in rows if r[0] == n and r[1] == method]) for n in names]
+        ax.bar([i + (k - len(METHODS) / 2 + 0.5) * width for i in range(len(names))],
+               [x["mean"] for x in s], width, yerr=[x["std"] for x in s], capsize=2,
+               label=method, color=plt.cm.tab10(k))
+    ax.set_xticks(range(len(names)))
+    ax.set_xticklabels(names)
+    ax.set_yscale("log")
+    ax.set_ylabel("ATE RMSE (m), mean +- std over runs")
+    ax.legend(fontsize=7, ncol=3)
+    save_figure(args, fig, "table1")
+
+
+if __name__ == "__main__":
+    main()
