@@ -12,9 +12,8 @@
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
-#include "frontend/frontend.hpp"
 #include "frontend/laser_log.hpp"
-#include "sensor_options.hpp"
+#include "frontend_options.hpp"
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/trajectory.hpp"
@@ -27,20 +26,16 @@ struct FragmentSetOptions {
   std::filesystem::path log;
   std::filesystem::path out;
   std::filesystem::path trajectory;
-  SensorOptions sensor;
-  frontend::FrontendSettings settings;
+  FrontendOptions frontend;
 };
 
 void run(FragmentSetOptions o) {
-  frontend::Frontend frontend(o.settings, o.log.filename().string());  // validates the settings
-  const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.sensor.overrides());
+  resolve(o.frontend);
+  frontend::validate(o.frontend.settings);  // before reading the log
+  const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.frontend.sensor.overrides());
   Progress progress;
-  for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    frontend.add_scan(log.scans[i]);
-    progress.update("fragment-set: scan " + std::to_string(i + 1) + "/" +
-                    std::to_string(log.scans.size()));
-  }
-  const frontend::FrontendResult result = frontend.finish();
+  const frontend::FrontendResult result =
+      run_frontend(log, o.frontend.settings, o.log.filename().string(), progress);
   progress.clear();
   slam::validate(result.fragment_set);  // e.g. no loop closure found: say so, write nothing
   write_atomically(o.out,
@@ -64,17 +59,11 @@ void add_fragment_set_command(CLI::App& app) {
       "`antslam optimize`");
   cmd->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
   cmd->add_option("-o,--out", o.out, "fragment-set JSON to write")->required();
-  cmd->add_option("--fragment-length", o.settings.fragmentation.length,
-                  "metres travelled per fragment")
-      ->capture_default_str();
-  cmd->add_option("--samples", o.settings.fragmentation.samples,
-                  "samples M per fragment alignment (eq. 7)")
-      ->capture_default_str();
-  cmd->add_option("--seed", o.settings.fragmentation.seed, "seed of the samples")
+  cmd->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
       ->capture_default_str();
   cmd->add_option("--trajectory", o.trajectory,
                   "also write the scan matcher's trajectory (TUM): the pre-solution baseline");
-  add_sensor_options(*cmd, o.sensor);
+  add_frontend_options(*cmd, o.frontend);
   cmd->callback([options] { run(*options); });
 }
 

@@ -65,7 +65,7 @@ void run(FrontendCommandOptions c) {
   fe::validate(o.map);
   fe::validate(o.settings);
 
-  const fe::LaserLog log = fe::read_carmen_file(c.log, o.sensor);
+  const fe::LaserLog log = fe::read_carmen_file(c.log, o.sensor.overrides());
   const double read_seconds = seconds_since(start);
   Progress progress;
   const auto matching = std::chrono::steady_clock::now();
@@ -130,6 +130,7 @@ void add_frontend_command(CLI::App& app) {
   sub->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
       ->capture_default_str();
   add_frontend_options(*sub, o.frontend);
+  add_map_options(*sub, o.frontend);
   sub->add_option("--average-samples", o.average_samples,
                   "also write map-samples.png: the average map of this many random sample "
                   "sequences (eqs. 7-8)");

@@ -1,7 +1,5 @@
 #include "frontend_options.hpp"
 
-#include <numbers>
-
 namespace antslam::cli {
 
 void add_frontend_options(CLI::App& command, FrontendOptions& o) {
@@ -27,13 +25,7 @@ void add_frontend_options(CLI::App& command, FrontendOptions& o) {
       .add_option("--temperature", o.settings.matcher.temperature,
                   "scan-matcher likelihood temperature")
       ->capture_default_str();
-  command.add_option("--fov", o.fov_degrees, "laser field of view, degrees (overrides the log)");
-  command.add_option("--first-beam", o.first_beam_degrees,
-                     "angle of the first beam, degrees (default -fov/2; overrides the log)");
-  command.add_option("--max-range", o.sensor.max_range,
-                     "laser maximum range, metres: readings at or above are no-returns");
-  command.add_option("--laser-offset", o.sensor.laser_offset,
-                     "laser position ahead of the robot origin, metres (overrides the log)");
+  add_sensor_options(command, o.sensor);
   command.add_flag("--no-closures", o.no_closures, "do not look for loop closures");
   command
       .add_option("--closure-min-score", o.settings.closure.min_score,
@@ -47,14 +39,14 @@ void add_frontend_options(CLI::App& command, FrontendOptions& o) {
       .add_option("--closure-temperature", o.settings.closure.temperature,
                   "divides the loop-closure log-likelihood (widens N(mu_H, Sigma_H))")
       ->capture_default_str();
+}
+
+void add_map_options(CLI::App& command, FrontendOptions& o) {
   command.add_option("--resolution", o.map.resolution, "map cell size, metres")
       ->capture_default_str();
 }
 
 void resolve(FrontendOptions& o) {
-  constexpr double kRadians = std::numbers::pi / 180.0;
-  if (o.fov_degrees) o.sensor.field_of_view = *o.fov_degrees * kRadians;
-  if (o.first_beam_degrees) o.sensor.first_angle = *o.first_beam_degrees * kRadians;
   if (o.alignment == "exit-scan")
     o.settings.fragmentation.covariance = frontend::AlignmentCovariance::exit_scan;
   o.settings.closure.enabled = !o.no_closures;

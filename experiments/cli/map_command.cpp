@@ -113,7 +113,7 @@ void run(MapOptions o) {
 
   Progress progress;
   progress.update("reading " + o.log.string(), true);
-  const fe::LaserLog log = fe::read_carmen_file(o.log, o.frontend.sensor);
+  const fe::LaserLog log = fe::read_carmen_file(o.log, o.frontend.sensor.overrides());
   const double read_s = seconds_since(start);
   const auto frontend_start = std::chrono::steady_clock::now();
   const fe::FrontendResult fr =
@@ -197,6 +197,7 @@ void add_map_command(CLI::App& app) {
   sub->add_flag("--no-maps", o.no_maps, "do not draw the maps");
   add_optimizer_options(*sub, o.optimizer);
   add_frontend_options(*sub, o.frontend);
+  add_map_options(*sub, o.frontend);
   sub->callback([options] { run(*options); });
 }
 
