@@ -4,8 +4,9 @@ corrected logs (aces, intel; `antslam simulate-odometry --seed 1`): (a) the init
 scan matcher's) beside the average map of random sample sequences (the spread the optimizer
 chooses from, `antslam frontend --average-samples`), (b) the average of the optimized maps of
 every AntSLAM (hybrid) trial (`antslam map --method hybrid`), (b') their corrected trajectories
-overlaid, and (c) the best weight (eq. 10) against time, mean +- std over the trials. Writes fig5.csv (per dataset and trial: final weight, time, ATE if a reference
-exists), table.md and fig5-DATASET.png into the results folder.
+overlaid, and (c) the best weight (eq. 10) against time, mean +- std over the trials. Writes
+fig5.csv (per dataset and trial: final weight, time, ATE if a reference exists), table.md and
+fig5-DATASET.png into the results folder.
 
     /usr/bin/python3 experiments/scripts/fig5.py [--quick] [--trials 100] [--out results/fig5]
         [--publish]
