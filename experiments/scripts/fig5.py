@@ -2,17 +2,18 @@
 """Paper Fig. 5 on real logs: for the bundled one-loop log (malaga) and for noise-corrupted
 corrected logs (aces, intel; `antslam simulate-odometry --seed 1`): (a) the initial map (the
 scan matcher's) beside the average map of random sample sequences (the spread the optimizer
-chooses from, `antslam frontend --average-samples`), (b) the corrected trajectories of every
-AntSLAM (hybrid) trial overlaid, and (c) the best weight (eq. 10) against time, mean +- std over
-the trials. Writes fig5.csv (per dataset and trial: final weight, time, ATE if a reference
-exists), table.md and fig5-DATASET.png into the results folder.
+chooses from, `antslam frontend --average-samples`), (b) the average of the optimized maps of
+every AntSLAM (hybrid) trial (`antslam map --method hybrid`), (b') their corrected trajectories
+overlaid, and (c) the best weight (eq. 10) against time, mean +- std over the trials. Writes
+fig5.csv (per dataset and trial: final weight, time, ATE if a reference exists), table.md and
+fig5-DATASET.png into the results folder.
 
     /usr/bin/python3 experiments/scripts/fig5.py [--quick] [--trials 100] [--out results/fig5]
         [--publish]
 
-The paper's panel (b) is the average *map* of the 100 optimized maps; the command line renders
-maps only for the frontend's frames, so (b) overlays the 100 corrected trajectories instead: a
-tight bundle is the same statement (the trials agree), a fan shows where they do not.
+Panel (b) is the paper's: `antslam map` runs the same frontend and fragment set (seed 1) and the
+same hybrid trials and averages their maps. (b') adds the trajectories: a tight bundle says the
+trials agree, a fan shows where they do not.
 """
 import os
 
@@ -51,6 +52,9 @@ def study(args, name):
     prefix = os.path.join(work, "hybrid")
     antslam(args, "optimize", fragment_set, "--method", "hybrid", "--trials", args.trials,
             "--seed", 1, "--iterations", args.iterations, "-o", prefix)
+    progress(f"{name}: average map of the {args.trials} hybrid trials")
+    antslam(args, "map", log, "--method", "hybrid", "--trials", args.trials, "--seed", 1,
+            "--iterations", args.iterations, "--out", os.path.join(work, "map"))
     traces = {}
     for row in read_csv(prefix + ".convergence.csv"):
         traces.setdefault(int(row["trial"]), []).append(
@@ -75,18 +79,21 @@ def study(args, name):
         rows.append([name, seed, weight, "" if ate is None else ate])
     return {"traces": list(traces.values()), "trials": trials, "paths": paths, "rows": rows,
             "reference": read_tum(reference) if reference else None,
-            "frontend": os.path.join(work, "frontend")}
+            "frontend": os.path.join(work, "frontend"), "map": os.path.join(work, "map")}
 
 
 def plot(args, name, r):
-    fig, axes = plt.subplots(1, 4, figsize=(17, 4.4))
-    for ax, png, title in ((axes[0], "map.png", "(a) initial map (scan matcher)"),
-                           (axes[1], "map-samples.png",
-                            f"(a') average of {args.trials} random sample sequences")):
-        ax.imshow(mpimg.imread(os.path.join(r["frontend"], png)), cmap="gray")
+    fig, axes = plt.subplots(1, 5, figsize=(21, 4.4))
+    for ax, png, title in ((axes[0], os.path.join(r["frontend"], "map.png"),
+                            "(a) initial map (scan matcher)"),
+                           (axes[1], os.path.join(r["frontend"], "map-samples.png"),
+                            f"(a') average of {args.trials} random sample sequences"),
+                           (axes[2], os.path.join(r["map"], "map-average.png"),
+                            f"(b) average of the {args.trials} optimized maps (hybrid)")):
+        ax.imshow(mpimg.imread(png), cmap="gray")
         ax.set_title(title, fontsize=9)
         ax.axis("off")
-    ax = axes[2]
+    ax = axes[3]
     for path in r["paths"]:
         ax.plot([p[0] for p in path], [p[1] for p in path], color="tab:blue", lw=0.5, alpha=0.15)
     if r["reference"]:
@@ -94,9 +101,9 @@ def plot(args, name, r):
                 ls="--", label="reference")
         ax.legend(fontsize=7)
     ax.set_aspect("equal")
-    ax.set_title(f"(b) {len(r['paths'])} corrected trajectories (hybrid)"
+    ax.set_title(f"(b') {len(r['paths'])} corrected trajectories (hybrid)"
                  + (", aligned" if r["reference"] else ""), fontsize=9)
-    ax = axes[3]
+    ax = axes[4]
     end = max(t[-1][0] for t in r["traces"])
     grid = [end * i / 200 for i in range(201)]
     mean, std = step_mean(r["traces"], grid)
