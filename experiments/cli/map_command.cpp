@@ -25,7 +25,7 @@
 #include "map_report.hpp"
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
-#include "tsp_options_command.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 

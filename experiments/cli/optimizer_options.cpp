@@ -1,6 +1,6 @@
 #include "optimizer_options.hpp"
 
-#include "tsp_options_command.hpp"  // non_negative_integer
+#include "validators.hpp"
 
 namespace antslam::cli {
 

@@ -19,6 +19,7 @@
 #include "tsp/optima.hpp"
 #include "tsp/tsplib.hpp"
 #include "tsp_options_command.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 

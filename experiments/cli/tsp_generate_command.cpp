@@ -7,7 +7,7 @@
 #include "commands.hpp"
 #include "tsp/generator.hpp"
 #include "tsp/tsplib.hpp"
-#include "tsp_options_command.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 

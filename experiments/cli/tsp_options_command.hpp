@@ -38,9 +38,4 @@ std::string backend_name(const TspOptions& options);
 /// "mmas, 25 ants, rho 0.2, 3opt (20 neighbours)".
 std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& options);
 
-/// A CLI11 validator: a finite number in [lo, hi].
-CLI::Validator finite_in(double lo, double hi);
-/// A CLI11 validator: decimal digits only (unsigned options would otherwise wrap "-1").
-CLI::Validator non_negative_integer();
-
 }  // namespace antslam::cli
