@@ -41,8 +41,7 @@ MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& 
   const auto start = std::chrono::steady_clock::now();
   MappingResult r;
   r.trials = slam::run_trials(set, settings.optimize, settings.trials, settings.threads, observer);
-  for (std::size_t t = 1; t < r.trials.size(); ++t)
-    if (r.trials[t].scores.weight < r.trials[r.best].scores.weight) r.best = t;
+  r.best = slam::best_trial(r.trials);
   const std::vector<slam::Pose2> means = slam::mean_alignments(set);
   r.scan_matcher = slam::score(set, means);
   r.scan_matcher_frames = slam::chain(means);

@@ -93,12 +93,12 @@ StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& s
   r.seed = settings.seed;
   r.trials = trials.size();
   std::vector<double> weight, chi2, elapsed;
-  for (std::size_t t = 0; t < trials.size(); ++t) {
-    weight.push_back(trials[t].scores.weight);
-    chi2.push_back(trials[t].scores.chi2);
-    elapsed.push_back(trials[t].elapsed_s);
-    if (trials[t].scores.weight < trials[r.best_trial].scores.weight) r.best_trial = t;
+  for (const OptimizeResult& trial : trials) {
+    weight.push_back(trial.scores.weight);
+    chi2.push_back(trial.scores.chi2);
+    elapsed.push_back(trial.elapsed_s);
   }
+  r.best_trial = best_trial(trials);
   r.weight = statistics(weight);
   r.chi2 = statistics(chi2);
   r.elapsed_s = statistics(elapsed);

@@ -35,6 +35,14 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
   return results;
 }
 
+std::size_t best_trial(std::span<const OptimizeResult> trials) {
+  if (trials.empty()) throw std::invalid_argument("best_trial: no trials");
+  std::size_t best = 0;
+  for (std::size_t t = 1; t < trials.size(); ++t)
+    if (trials[t].scores.weight < trials[best].scores.weight) best = t;
+  return best;
+}
+
 Statistics statistics(std::span<const double> values) {
   if (values.empty()) throw std::invalid_argument("statistics of no values");
   Statistics s;

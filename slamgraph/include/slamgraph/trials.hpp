@@ -25,6 +25,9 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
                                        std::size_t trials, std::size_t threads,
                                        const TrialsObserver& observer = {});
 
+/// The trial with the lowest eq. (10) weight (the first on ties); throws on an empty span.
+std::size_t best_trial(std::span<const OptimizeResult> trials);
+
 struct Statistics {
   double mean = 0.0;  ///< arithmetic mean
   double std = 0.0;   ///< sample standard deviation (n - 1); 0 for one value
