@@ -19,10 +19,10 @@
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/map_render.hpp"
-#include "frontend/mapping.hpp"
 #include "frontend_options.hpp"
 #include "frontend_report.hpp"
 #include "map_report.hpp"
+#include "mapping/optimize_map.hpp"
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "validators.hpp"
@@ -37,7 +37,7 @@ struct MapOptions {
   std::filesystem::path log, out, reference;
   FrontendOptions frontend;
   OptimizerOptions optimizer;  ///< --method defaults to hybrid+nlopt (add_map_command)
-  fe::MappingSettings mapping;
+  mapping::MappingSettings mapping;
   bool no_maps = false;
 };
 
@@ -48,7 +48,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 /// The three maps (Fig. 5a, the optimized map, Fig. 5b), written to DIR; returns the paths.
 std::vector<std::filesystem::path> write_maps(const MapOptions& o, const fe::LaserLog& log,
                                               const fe::FrontendResult& fr,
-                                              const fe::MappingResult& mr, Progress& progress) {
+                                              const mapping::MappingResult& mr,
+                                              Progress& progress) {
   const fe::MapLayout layout = fe::map_layout(fr);
   const std::vector<std::filesystem::path> paths{
       o.out / "map-scan-matcher.png", o.out / "map-optimized.png", o.out / "map-average.png"};
@@ -67,15 +68,15 @@ std::vector<std::filesystem::path> write_maps(const MapOptions& o, const fe::Las
 }
 
 std::optional<MapEvaluation> evaluate(const MapOptions& o, const fe::FrontendResult& fr,
-                                      const fe::MappingResult& mr) {
+                                      const mapping::MappingResult& mr) {
   if (o.reference.empty()) return std::nullopt;
   const slam::Trajectory reference = slam::read_tum_file(o.reference);
   return MapEvaluation{o.reference.string(), eval::evaluate(fr.trajectory, reference, {}),
                        eval::evaluate(mr.corrected, reference, {})};
 }
 
-void print_summary(const MapOptions& o, const fe::FrontendResult& fr, const fe::MappingResult& mr,
-                   const std::optional<MapEvaluation>& e) {
+void print_summary(const MapOptions& o, const fe::FrontendResult& fr,
+                   const mapping::MappingResult& mr, const std::optional<MapEvaluation>& e) {
   const slam::FragmentSet& set = fr.fragment_set;
   const slam::OptimizeResult& best = mr.trials[mr.best];
   std::printf("%s: %zu scans, %zu fragments, %zu loop closures (frontend %.2f s)\n",
@@ -107,7 +108,7 @@ void run(MapOptions o) {
   o.frontend.settings.fragmentation.seed = o.mapping.optimize.seed;
   fe::validate(o.frontend.settings);
   fe::validate(o.frontend.map);
-  fe::validate(o.mapping);
+  mapping::validate(o.mapping);
   if (!o.reference.empty() && !std::filesystem::is_regular_file(o.reference))
     throw std::runtime_error(o.reference.string() + ": cannot open the reference trajectory");
 
@@ -130,7 +131,7 @@ void run(MapOptions o) {
 
   const std::string trials = std::to_string(o.mapping.trials);
   progress.update("optimising: " + o.optimizer.method + ", trial 0/" + trials, true);
-  const fe::MappingResult mr = fe::optimize_map(set, o.mapping, [&](std::size_t done) {
+  const mapping::MappingResult mr = mapping::optimize_map(set, o.mapping, [&](std::size_t done) {
     progress.update(
         "optimising: " + o.optimizer.method + ", trial " + std::to_string(done) + "/" + trials,
         done == o.mapping.trials);

@@ -19,14 +19,14 @@ json statistics_json(const slam::Statistics& s) {
 
 json scores_json(const slam::Scores& s) { return {{"weight", s.weight}, {"chi2", s.chi2}}; }
 
-json residual_json(const frontend::ClosureResidual& r) {
+json residual_json(const mapping::ClosureResidual& r) {
   return {{"residual", pose_json(r.residual)}, {"mahalanobis", r.mahalanobis}};
 }
 
 }  // namespace
 
-json optimization_json(const slam::FragmentSet& set, const frontend::MappingSettings& settings,
-                       const frontend::MappingResult& r) {
+json optimization_json(const slam::FragmentSet& set, const mapping::MappingSettings& settings,
+                       const mapping::MappingResult& r) {
   const slam::OptimizeSettings& s = settings.optimize;
   std::vector<double> weights, chi2, seconds;
   json trials = json::array();
@@ -76,7 +76,7 @@ json optimization_json(const slam::FragmentSet& set, const frontend::MappingSett
           {"alignments", alignments}};
 }
 
-json closures_json(const slam::FragmentSet& set, const frontend::MappingResult& r) {
+json closures_json(const slam::FragmentSet& set, const mapping::MappingResult& r) {
   json out = json::array();
   for (std::size_t c = 0; c < set.closures.size(); ++c)
     out.push_back({{"from", set.closures[c].from},

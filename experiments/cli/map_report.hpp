@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "eval/evaluation.hpp"
-#include "frontend/mapping.hpp"
+#include "mapping/optimize_map.hpp"
 
 namespace antslam::cli {
 
@@ -18,11 +18,11 @@ inline constexpr double kClosureSigmas = 2.0;
 /// and of the best; the best map's frames and, per alignment, its Mahalanobis distance from
 /// mu_i and its term of eq. (10).
 nlohmann::json optimization_json(const slam::FragmentSet& set,
-                                 const frontend::MappingSettings& settings,
-                                 const frontend::MappingResult& result);
+                                 const mapping::MappingSettings& settings,
+                                 const mapping::MappingResult& result);
 
 /// Per closure: hypothesis, residual and Mahalanobis distance before (scan matcher) and after.
-nlohmann::json closures_json(const slam::FragmentSet& set, const frontend::MappingResult& result);
+nlohmann::json closures_json(const slam::FragmentSet& set, const mapping::MappingResult& result);
 
 /// Scan-matcher and optimized trajectories against the reference (antslam eval's figures).
 struct MapEvaluation {

@@ -1,4 +1,4 @@
-// antslam tinyslam LOG --out DIR: the tinySLAM-style baseline (experiments/baselines) on a
+// antslam tinyslam LOG --out DIR: the tinySLAM-style baseline (baselines/) on a
 // CARMEN log. Writes DIR/trajectory.tum (a pose for every scan), DIR/map.png (its one map) and
 // DIR/report.json (settings, counts, times).
 

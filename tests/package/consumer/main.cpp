@@ -1,14 +1,25 @@
-// Solves a tiny layered problem with the installed engine; exits 0 if the optimum is found.
+// Uses every installed library once; exits 0 if each gives the value computed here by hand.
 #include <aco/synthetic_layered.hpp>
 #include <aco/variants.hpp>
+#include <baselines/tinyslam.hpp>
 #include <cstdio>
+#include <eval/statistics.hpp>
+#include <frontend/frontend.hpp>
+#include <mapping/optimize_map.hpp>
+#include <slamgraph/synth.hpp>
+#include <tsp/generator.hpp>
+#include <tsp/problem.hpp>
+#include <tsp/solver.hpp>
+#include <vector>
 
 int main() {
-  const antslam::aco::SyntheticLayeredProblem problem(3, 4, 1);
-  antslam::aco::Parameters p;
-  p.variant = antslam::aco::Variant::hybrid;
-  const auto result = antslam::aco::solve(problem, p, {.max_iterations = 200});
-  double best = 1e300;  // enumerate the 64 choices
+  namespace as = antslam;
+  // Engine: a tiny layered problem against enumeration of its 64 choices.
+  const as::aco::SyntheticLayeredProblem problem(3, 4, 1);
+  as::aco::Parameters p;
+  p.variant = as::aco::Variant::hybrid;
+  const auto result = as::aco::solve(problem, p, {.max_iterations = 200});
+  double best = 1e300;
   for (std::uint32_t a = 0; a < 4; ++a)
     for (std::uint32_t b = 0; b < 4; ++b)
       for (std::uint32_t c = 0; c < 4; ++c) {
@@ -16,6 +27,26 @@ int main() {
         const double cost = problem.cost(choice);
         best = cost < best ? cost : best;
       }
-  std::printf("consumer: best %.6f, optimum %.6f\n", result.best.cost, best);
-  return result.best.cost == best ? 0 : 1;
+  int failures = result.best.cost == best ? 0 : 1;
+
+  // TSP: a tour of 20 random cities visits each city once.
+  const as::tsp::TspProblem tsp(as::tsp::random_uniform_instance(20, 3));
+  const auto tour = as::tsp::solve(tsp, {}, {.max_iterations = 5});
+  failures += tour.best.path.size() == 20 ? 0 : 1;
+
+  // SLAM graph and mapping: the paper's N = 9 set has one loop closure, whose residual under
+  // its own ground truth is small.
+  const as::slam::FragmentSet set = as::slam::synthesize(as::slam::synth_preset("paper9"));
+  const auto residuals = as::mapping::closure_residuals(set, set.reference);
+  failures += residuals.size() == set.closures.size() ? 0 : 1;
+
+  // Frontend, baselines, eval: settings that validate, statistics of {1, 3}.
+  as::frontend::validate(as::frontend::FrontendSettings{});
+  as::baselines::validate(as::baselines::TinySlamSettings{});
+  const std::vector<double> values{1.0, 3.0};
+  failures += as::eval::mean_std(values).mean == 2.0 ? 0 : 1;
+
+  std::printf("consumer: best %.6f, optimum %.6f, %d failure(s)\n", result.best.cost, best,
+              failures);
+  return failures;
 }

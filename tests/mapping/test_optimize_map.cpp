@@ -8,11 +8,13 @@
 #include <vector>
 
 #include "frontend/frontend.hpp"
-#include "frontend/mapping.hpp"
 #include "frontend/simulator.hpp"
+#include "mapping/optimize_map.hpp"
 
-namespace antslam::frontend {
+namespace antslam::mapping {
 namespace {
+
+using namespace antslam::frontend;
 
 using V = Eigen::Vector2d;
 
@@ -157,4 +159,4 @@ TEST(Mapping, ValidatesTheOptimizerBeforeAnyWork) {
 }
 
 }  // namespace
-}  // namespace antslam::frontend
+}  // namespace antslam::mapping

@@ -1,4 +1,4 @@
-#include "frontend/mapping.hpp"
+#include "mapping/optimize_map.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "slamgraph/trials.hpp"
 
-namespace antslam::frontend {
+namespace antslam::mapping {
 
 slam::OptimizeSettings default_mapping_optimizer() {
   slam::OptimizeSettings s;
@@ -52,4 +52,4 @@ MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& 
   return r;
 }
 
-}  // namespace antslam::frontend
+}  // namespace antslam::mapping

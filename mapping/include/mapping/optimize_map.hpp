@@ -13,7 +13,7 @@
 #include "slamgraph/optimize.hpp"
 #include "slamgraph/trajectory.hpp"
 
-namespace antslam::frontend {
+namespace antslam::mapping {
 
 /// The pipeline's optimizer: hybrid (Algorithm 2) + NLopt refinement, otherwise the defaults.
 slam::OptimizeSettings default_mapping_optimizer();
@@ -62,4 +62,4 @@ using TrialObserver = std::function<void(std::size_t finished)>;
 MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& settings,
                            const TrialObserver& observer = {});
 
-}  // namespace antslam::frontend
+}  // namespace antslam::mapping
