@@ -53,7 +53,7 @@ void BM_Trials(benchmark::State& state) {
   const auto threads = static_cast<std::size_t>(state.range(0));
   OptimizeSettings s;
   for (auto _ : state) {
-    const auto results = run_trials(set, s, 100, threads);
+    const auto results = run_trials(set, s, {.trials = 100, .threads = threads});
     benchmark::DoNotOptimize(results.front().scores.weight);
   }
   state.SetItemsProcessed(state.iterations() * 100);

@@ -44,7 +44,10 @@ def optimize(args, work, fragment_set, method, tag, trials, extra=()):
     run(args, "optimize", fragment_set, "--method", method, "--trials", str(trials),
         "--threads", str(args.threads), "--seed", "1", "-o", prefix, *extra)
     with open(prefix + ".json") as f:
-        return json.load(f), prefix
+        result = json.load(f)
+    with open(prefix + ".times.json") as f:
+        result["elapsed_s"] = json.load(f)["elapsed_s"]
+    return result, prefix
 
 
 def synth(args, work, preset, seed):
@@ -117,12 +120,14 @@ def step_mean(traces, grid):
 
 
 def read_traces(prefix):
+    with open(prefix + ".times.json") as f:
+        times = json.load(f)["trials"]
     traces = {}
     with open(prefix + ".convergence.csv") as f:
         for row in csv.DictReader(f):
-            traces.setdefault(int(row["trial"]), []).append(
-                (float(row["elapsed_s"]), float(row["best_weight"])))
-    return list(traces.values())
+            traces.setdefault(int(row["trial"]), []).append(float(row["best_weight"]))
+    return [[(elapsed, w) for (_, elapsed), w in zip(times[t]["convergence"], weights)]
+            for t, weights in sorted(traces.items())]
 
 
 def methods_study(args, work, out):

@@ -105,6 +105,7 @@ void run(MapOptions o) {
   const auto start = std::chrono::steady_clock::now();
   resolve(o.frontend);
   o.mapping.optimize = optimize_settings(o.optimizer);
+  o.mapping.backend = o.mapping.optimize.backend;
   o.frontend.settings.fragmentation.seed = o.mapping.optimize.seed;
   fe::validate(o.frontend.settings);
   fe::validate(o.frontend.map);

@@ -58,7 +58,7 @@ std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
                                             const OptimizeOptions& o) {
   Progress progress;
   if (o.trials > 1) {
-    return slam::run_trials(set, o.s, o.trials, o.threads, [&](std::size_t done) {
+    return slam::run_trials(set, o.s, {o.trials, o.threads, o.s.backend}, [&](std::size_t done) {
       progress.update("trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
                       done == o.trials);
     });
@@ -121,8 +121,10 @@ void run(const OptimizeOptions& options) {
                    [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
   write_atomically(prefix + ".convergence.csv",
                    [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
-  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv\n", prefix.c_str(), prefix.c_str(),
-              prefix.c_str());
+  write_atomically(prefix + ".times.json",
+                   [&](std::ostream& out) { slam::write_times_json(out, trials); });
+  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv, %s.times.json\n", prefix.c_str(),
+              prefix.c_str(), prefix.c_str(), prefix.c_str());
   if (!o.g2o_out.empty()) {
     write_atomically(o.g2o_out, [&](std::ostream& out) {
       slam::write_g2o(out, slam::pose_graph_of(set, r.best.frames));
@@ -155,7 +157,8 @@ void add_optimize_command(CLI::App& app) {
                   "ground-truth poses (.g2o, .tum, `x y theta` lines) for the trajectory error");
   cmd->add_option("-o,--output", o->output,
                   "output prefix (default: <input stem>.<method>): PREFIX.json, "
-                  "PREFIX.trials.csv, PREFIX.convergence.csv");
+                  "PREFIX.trials.csv, PREFIX.convergence.csv (the same for a seed on any thread "
+                  "count or backend), PREFIX.times.json (wall-clock times)");
   cmd->add_option("--g2o-out", o->g2o_out, "write the best map as a g2o pose graph");
   cmd->add_option("--tum-out", o->tum_out, "write the best map's trajectory in TUM format");
   cmd->callback([o] {

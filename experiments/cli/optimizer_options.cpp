@@ -1,16 +1,19 @@
 #include "optimizer_options.hpp"
 
+#include <string>
+
+#include "backend_option.hpp"
 #include "validators.hpp"
 
 namespace antslam::cli {
 
 void add_optimizer_options(CLI::App& command, OptimizerOptions& o) {
   slam::OptimizeSettings& s = o.settings;
-  command
-      .add_option("--method", o.method,
-                  "as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, "
-                  "random or exhaustive")
-      ->capture_default_str();
+  std::string methods;
+  for (const slam::Method m : slam::all_methods())
+    methods += (methods.empty() ? "" : ", ") + std::string(slam::to_string(m));
+  command.add_option("--method", o.method, methods)->capture_default_str();
+  add_backend_option(command, o.backend);
   command.add_option("--seed", s.seed, "seed of every random choice")
       ->check(non_negative_integer())
       ->capture_default_str();
@@ -57,6 +60,7 @@ slam::OptimizeSettings optimize_settings(const OptimizerOptions& o) {
   s.method = slam::parse_method(o.method);
   s.refine.algorithm = slam::parse_refine_algorithm(o.nlopt_algorithm);
   s.refine.graduated = !o.no_graduated;
+  s.backend = parse_backend_option(o.backend);
   return s;
 }
 

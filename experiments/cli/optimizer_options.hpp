@@ -14,10 +14,11 @@ struct OptimizerOptions {
   std::string method = "hybrid";          ///< --method (slam::parse_method)
   std::string nlopt_algorithm = "lbfgs";  ///< --nlopt-algorithm
   bool no_graduated = false;              ///< --no-graduated: plain NLopt refinement only
+  std::string backend = "auto";           ///< --backend (aco::kBackends)
   slam::OptimizeSettings settings;        ///< everything else
 };
 
-/// Registers --method, --seed and the engine, NLopt and Ceres options on `command`.
+/// Registers --method, --seed, --backend and the engine, NLopt and Ceres options on `command`.
 void add_optimizer_options(CLI::App& command, OptimizerOptions& options);
 
 /// The settings with the method and NLopt algorithm parsed from their names; throws

@@ -48,7 +48,6 @@ std::string excess_text(double length, std::optional<double> optimum) {
 
 void run(const TspCommand& c) {
   const tsp::SolverSettings settings = solver_settings(c.algorithm);
-  aco::AnyBackend backend = make_backend(c.algorithm);
   const tsp::TspProblem problem(tsp::read_instance(c.instance), problem_settings(c.algorithm));
   const tsp::Instance& instance = problem.instance();
   const std::optional<double> optimum =
@@ -73,7 +72,7 @@ void run(const TspCommand& c) {
          << r.elapsed_s << " s";
     progress.update(line.str());
   };
-  const aco::RunResult result = tsp::solve(problem, settings, termination, backend, observer);
+  const aco::RunResult result = tsp::solve(problem, settings, termination, observer);
   progress.clear();
 
   const double length = instance.tour_length(result.best.path);
@@ -82,9 +81,9 @@ void run(const TspCommand& c) {
 
   std::cout << "instance     " << instance.name() << " (" << instance.size() << " cities, "
             << tsp::to_string(instance.type()) << ")\n"
-            << "algorithm    " << describe_algorithm(problem, c.algorithm) << ", seed "
-            << settings.aco.seed << ", " << c.algorithm.threads << " thread(s) ("
-            << backend_name(c.algorithm) << ")\n"
+            << "algorithm    " << describe_algorithm(problem, c.algorithm, result.settings)
+            << ", seed " << settings.aco.seed << ", " << result.settings.threads << " thread(s) ("
+            << aco::to_string(result.settings.backend) << ")\n"
             << "best length  " << std::setprecision(15) << length;
   if (optimum)
     std::cout << "  (optimum " << *optimum << ", " << excess_text(length, optimum) << ")";
@@ -113,14 +112,14 @@ void run(const TspCommand& c) {
                         {"cities", instance.size()},
                         {"edge_weight_type", tsp::to_string(instance.type())},
                         {"variant", c.algorithm.variant},
-                        {"ants", tsp::resolved_ants(problem, settings)},
-                        {"rho", tsp::resolved_rho(settings)},
+                        {"ants", result.settings.colony.ants},
+                        {"rho", result.settings.rho},
                         {"local_search", c.algorithm.local_search},
                         {"neighbours", problem.neighbours(0).size()},
                         {"candidates", problem.candidates(0).size()},
                         {"seed", settings.aco.seed},
-                        {"threads", c.algorithm.threads},
-                        {"backend", backend_name(c.algorithm)},
+                        {"threads", result.settings.threads},
+                        {"backend", aco::to_string(result.settings.backend)},
                         {"best_length", length},
                         {"iterations", result.iterations},
                         {"best_iteration", result.best_iteration},

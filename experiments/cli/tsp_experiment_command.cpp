@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "aco/variant.hpp"
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
@@ -146,14 +147,13 @@ void run(const ExperimentCommand& c) {
           std::ostringstream prefix;
           prefix << "run " << runs.size() + 1 << "/" << total << "  " << r.instance << ' '
                  << variant << " t" << threads << " seed " << r.seed;
-          r.result = tsp::solve(problem, solver_settings(options), t, make_backend(options),
-                                [&](const aco::IterationReport& report) {
-                                  std::ostringstream line;
-                                  line << prefix.str() << "  best " << report.global_best << "  "
-                                       << std::fixed << std::setprecision(1) << report.elapsed_s
-                                       << " s";
-                                  progress.update(line.str());
-                                });
+          r.result = tsp::solve(
+              problem, solver_settings(options), t, [&](const aco::IterationReport& report) {
+                std::ostringstream line;
+                line << prefix.str() << "  best " << report.global_best << "  " << std::fixed
+                     << std::setprecision(1) << report.elapsed_s << " s";
+                progress.update(line.str());
+              });
           r.length = problem.instance().tour_length(r.result.best.path);
           runs.push_back(std::move(r));
         }
@@ -181,7 +181,7 @@ void add_tsp_experiment_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--variants", c->variants, "ACO variants (comma separated)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"as", "eas", "ras", "acs", "mmas", "hybrid"}))
+      ->check(CLI::IsMember(aco::variant_names()))
       ->capture_default_str();
   sub->add_option("--threads", c->threads, "thread counts (comma separated)")
       ->delimiter(',')

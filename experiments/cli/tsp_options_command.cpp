@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
-#include "aco/backend_omp.hpp"
-#include "aco/backend_tbb.hpp"
+#include "aco/variant.hpp"
+#include "backend_option.hpp"
 #include "validators.hpp"
 
 namespace antslam::cli {
@@ -15,7 +16,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   aco::Parameters& p = o.solver.aco;
   if (single_run)
     command.add_option("--variant", o.variant, "ACO variant")
-        ->check(CLI::IsMember({"as", "eas", "ras", "acs", "mmas", "hybrid"}))
+        ->check(CLI::IsMember(aco::variant_names()))
         ->capture_default_str();
   command.add_option("--local-search", o.local_search, "local search applied to the ants' tours")
       ->check(CLI::IsMember({"none", "2opt", "2.5opt", "3opt"}))
@@ -57,12 +58,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
         ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
         ->capture_default_str();
   }
-  command
-      .add_option("--backend", o.backend,
-                  "parallel backend (auto: serial on 1 thread, else tbb; with omp on a shared "
-                  "machine set OMP_WAIT_POLICY=passive)")
-      ->check(CLI::IsMember({"auto", "serial", "omp", "tbb"}))
-      ->capture_default_str();
+  add_backend_option(command, o.backend);
   command.add_option("--alpha", p.alpha, "pheromone exponent")
       ->check(finite_in(0.0, 100.0))
       ->capture_default_str();
@@ -122,36 +118,19 @@ tsp::SolverSettings solver_settings(const TspOptions& o) {
   s.local_search.queue_changed_only = o.ls_start == "changed";
   if (s.aco.tau_init > s.aco.tau_max)
     throw std::invalid_argument("--tau-init must not exceed --tau-max");
+  s.backend = parse_backend_option(o.backend);
+  s.threads = o.threads;
+  aco::resolve(s.backend, s.threads);  // serial on more than one thread fails here, up front
   return s;
 }
 
 tsp::ProblemSettings problem_settings(const TspOptions& o) { return o.problem; }
 
-std::string backend_name(const TspOptions& o) {
-  if (o.backend != "auto") return o.backend;
-  // TBB, not OpenMP: OpenMP's default spin-waiting at the end of every iteration costs half
-  // the iterations when other processes compete for the cores (docs/tsp.md, "Threads").
-  return o.threads == 1 ? "serial" : "tbb";
-}
-
-aco::AnyBackend make_backend(const TspOptions& o) {
-  const std::string name = backend_name(o);
-  if (name == "serial") {
-    if (o.threads != 1) throw std::invalid_argument("--backend serial runs on exactly 1 thread");
-    return aco::SerialBackend{};
-  }
-  if (name == "omp") return aco::OmpBackend(o.threads);
-  if (name == "tbb") return aco::TbbBackend(o.threads);
-  throw std::invalid_argument("--backend: unknown backend '" + o.backend + "'");
-}
-
-std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& o) {
-  const tsp::SolverSettings s = solver_settings(o);
+std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& o,
+                               const aco::RunSettings& ran) {
   std::ostringstream out;
-  out << o.variant << ", " << tsp::resolved_ants(problem, s) << " ants, rho "
-      << tsp::resolved_rho(s) << ", " << o.local_search;
-  if (s.local_search.kind != tsp::LocalSearchKind::none)
-    out << " (" << problem.neighbours(0).size() << " neighbours)";
+  out << o.variant << ", " << ran.colony.ants << " ants, rho " << ran.rho << ", " << o.local_search;
+  if (ran.local_search) out << " (" << problem.neighbours(0).size() << " neighbours)";
   out << ", " << problem.candidates(0).size() << " candidates";
   return out.str();
 }

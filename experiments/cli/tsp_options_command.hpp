@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <string>
 
-#include "aco/backend.hpp"
+#include "aco/colony.hpp"
 #include "tsp/problem.hpp"
 #include "tsp/solver.hpp"
 
@@ -17,7 +17,7 @@ struct TspOptions {
   std::string variant = "mmas";       ///< as, eas, ras, acs, mmas, hybrid
   std::string local_search = "3opt";  ///< none, 2opt, 2.5opt, 3opt
   std::string ls_start = "changed";  ///< changed: queue cities whose edges changed; all: every city
-  std::string backend = "auto";      ///< auto (serial on 1 thread, else tbb), serial, omp, tbb
+  std::string backend = "auto";      ///< aco::kBackends: auto, serial, omp, tbb
   std::size_t threads = 1;           ///< threads building ants
   tsp::ProblemSettings problem;      ///< candidate and neighbour lists, matrix limit
   tsp::SolverSettings solver;        ///< engine parameters (variant/local search set from names)
@@ -27,15 +27,13 @@ struct TspOptions {
 /// --variant, --seed and --threads are left to the caller (experiments sweep them).
 void add_tsp_options(CLI::App& command, TspOptions& options, bool single_run);
 
-/// Checks the names and fills options.solver's variant and local search; throws
-/// std::invalid_argument naming the option on a bad value.
+/// Checks the names and fills options.solver's variant, local search, backend and threads;
+/// throws std::invalid_argument naming the option on a bad value.
 tsp::SolverSettings solver_settings(const TspOptions& options);
 tsp::ProblemSettings problem_settings(const TspOptions& options);
-aco::AnyBackend make_backend(const TspOptions& options);
-/// The backend name actually used ("auto" resolved).
-std::string backend_name(const TspOptions& options);
 
-/// "mmas, 25 ants, rho 0.2, 3opt (20 neighbours)".
-std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& options);
+/// "mmas, 25 ants, rho 0.2, 3opt (20 neighbours), 12 candidates" from what ran.
+std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& options,
+                               const aco::RunSettings& ran);
 
 }  // namespace antslam::cli

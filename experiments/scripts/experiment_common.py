@@ -101,6 +101,23 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
+def read_study(prefix):
+    """The files of `antslam optimize -o PREFIX`: the trials (rows of PREFIX.trials.csv with
+    elapsed_s and time_to_best_s from PREFIX.times.json) and, per trial, its convergence points
+    (rows of PREFIX.convergence.csv with elapsed_s), in order."""
+    times = read_json(prefix + ".times.json")["trials"]
+    trials = read_csv(prefix + ".trials.csv")
+    for row, t in zip(trials, times):
+        row["elapsed_s"], row["time_to_best_s"] = t["elapsed_s"], t["time_to_best_s"]
+    traces = {}
+    for row in read_csv(prefix + ".convergence.csv"):
+        traces.setdefault(int(row["trial"]), []).append(row)
+    for t, points in traces.items():
+        for row, (_, elapsed) in zip(points, times[t]["convergence"]):
+            row["elapsed_s"] = elapsed
+    return trials, [traces[t] for t in sorted(traces)]
+
+
 def write_csv(path, header, rows):
     with open(path, "w", newline="") as f:
         w = csv.writer(f)

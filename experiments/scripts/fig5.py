@@ -20,8 +20,8 @@ import os
 import matplotlib.image as mpimg
 
 from experiment_common import (DATA, antslam, check_program, header, markdown_table, parser,
-                               plt, pm, progress, read_csv, read_json, save_figure, stats,
-                               step_mean, write_csv)
+                               plt, pm, progress, read_csv, read_json, read_study, save_figure,
+                               stats, step_mean, write_csv)
 
 LASER = os.path.join(DATA, "laser")
 
@@ -55,11 +55,9 @@ def study(args, name):
     progress(f"{name}: average map of the {args.trials} hybrid trials")
     antslam(args, "map", log, "--method", "hybrid", "--trials", args.trials, "--seed", 1,
             "--iterations", args.iterations, "--out", os.path.join(work, "map"))
-    traces = {}
-    for row in read_csv(prefix + ".convergence.csv"):
-        traces.setdefault(int(row["trial"]), []).append(
-            (float(row["elapsed_s"]), float(row["best_weight"])))
-    trials = read_csv(prefix + ".trials.csv")
+    trials, points = read_study(prefix)
+    traces = [[(float(p["elapsed_s"]), float(p["best_weight"])) for p in trace]
+              for trace in points]
     # `optimize --tum-out` writes the best trial's trajectory only: for panel (b) run seeds 1..T
     # one trial each (same settings) and keep every trajectory.
     paths, rows = [], []
@@ -77,7 +75,7 @@ def study(args, name):
         weight = float(read_csv(os.path.join(work, "trials", f"{seed}.trials.csv"))[0]["weight"])
         paths.append(read_tum(tum))
         rows.append([name, seed, weight, "" if ate is None else ate])
-    return {"traces": list(traces.values()), "trials": trials, "paths": paths, "rows": rows,
+    return {"traces": traces, "trials": trials, "paths": paths, "rows": rows,
             "reference": read_tum(reference) if reference else None,
             "frontend": os.path.join(work, "frontend"), "map": os.path.join(work, "map")}
 

@@ -20,8 +20,8 @@ needed.
 import os
 
 from experiment_common import (DATA, antslam, check_program, header, markdown_table, median,
-                               parser, plt, pm, progress, read_csv, read_json, save_figure, stats,
-                               step_mean, write_csv)
+                               parser, plt, pm, progress, read_json, read_study, save_figure,
+                               stats, step_mean, write_csv)
 
 METHODS = ["as", "acs", "mmas", "hybrid", "hybrid+nlopt", "ceres", "random"]
 DISCRETE_ACO = ["as", "acs", "mmas", "hybrid"]
@@ -42,14 +42,12 @@ def run_method(args, name, path, method, budget, extra):
     antslam(args, "optimize", path, "--method", method, "--trials", args.trials, "--threads", 1,
             "--seed", 1, "--ants", ANTS, "-o", prefix, *extra)
     result = read_json(prefix + ".json")
-    traces = {}
-    for row in read_csv(prefix + ".convergence.csv"):
-        traces.setdefault(int(row["trial"]), []).append(
-            (int(row["evaluations"]), float(row["elapsed_s"]), float(row["best_weight"])))
-    trials = read_csv(prefix + ".trials.csv")
+    trials, points = read_study(prefix)
+    traces = [[(int(p["evaluations"]), float(p["elapsed_s"]), float(p["best_weight"]))
+               for p in trace] for trace in points]
     return {"weight": stats([float(t["weight"]) for t in trials]),
             "elapsed": stats([float(t["elapsed_s"]) for t in trials]),
-            "chi2": result["chi2"]["mean"], "traces": list(traces.values())}
+            "chi2": result["chi2"]["mean"], "traces": traces}
 
 
 def time_to_target(traces, target):

@@ -40,7 +40,8 @@ MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& 
                                 "nothing to optimise (the scan-matcher map is the result)");
   const auto start = std::chrono::steady_clock::now();
   MappingResult r;
-  r.trials = slam::run_trials(set, settings.optimize, settings.trials, settings.threads, observer);
+  r.trials = slam::run_trials(set, settings.optimize,
+                              {settings.trials, settings.threads, settings.backend}, observer);
   r.best = slam::best_trial(r.trials);
   const std::vector<slam::Pose2> means = slam::mean_alignments(set);
   r.scan_matcher = slam::score(set, means);

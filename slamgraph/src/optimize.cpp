@@ -2,8 +2,10 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "optimize_detail.hpp"
 #include "slamgraph/search_baselines.hpp"
@@ -33,10 +35,38 @@ void validate(const OptimizeSettings& s) {
 
 namespace {
 
-constexpr std::array kMethods{Method::ant_system,   Method::elitist, Method::rank_based,
-                              Method::acs,          Method::mmas,    Method::hybrid,
-                              Method::hybrid_nlopt, Method::nlopt,   Method::ceres,
-                              Method::ceres_robust, Method::random,  Method::exhaustive};
+/// Every method: the ACO ones by their engine variant (named by the engine's table), the others
+/// by name.
+struct MethodInfo {
+  Method method;
+  std::optional<aco::Variant> variant;  ///< the engine variant it runs, if any
+  std::string_view name;                ///< its name when it is not the variant's
+};
+constexpr std::array<MethodInfo, 12> kMethods{{
+    {Method::ant_system, aco::Variant::ant_system, ""},
+    {Method::elitist, aco::Variant::elitist, ""},
+    {Method::rank_based, aco::Variant::rank_based, ""},
+    {Method::acs, aco::Variant::acs, ""},
+    {Method::mmas, aco::Variant::mmas, ""},
+    {Method::hybrid, aco::Variant::hybrid, ""},
+    {Method::hybrid_nlopt, aco::Variant::hybrid, "hybrid+nlopt"},
+    {Method::nlopt, std::nullopt, "nlopt"},
+    {Method::ceres, std::nullopt, "ceres"},
+    {Method::ceres_robust, std::nullopt, "ceres-robust"},
+    {Method::random, std::nullopt, "random"},
+    {Method::exhaustive, std::nullopt, "exhaustive"},
+}};
+constexpr std::array<Method, kMethods.size()> kMethodList = [] {
+  std::array<Method, kMethods.size()> list{};
+  for (std::size_t i = 0; i < kMethods.size(); ++i) list[i] = kMethods[i].method;
+  return list;
+}();
+
+const MethodInfo& info(Method m) {
+  for (const MethodInfo& i : kMethods)
+    if (i.method == m) return i;
+  throw std::invalid_argument("unknown optimizer method");
+}
 
 void check_settings(const FragmentSet& set, const OptimizeSettings& s) {
   validate(s);
@@ -71,38 +101,13 @@ void run_exhaustive(const FragmentSet& set, const OptimizeSettings& s, detail::R
 }  // namespace
 
 std::string_view to_string(Method m) {
-  switch (m) {
-    case Method::ant_system:
-      return "as";
-    case Method::elitist:
-      return "eas";
-    case Method::rank_based:
-      return "ras";
-    case Method::acs:
-      return "acs";
-    case Method::mmas:
-      return "mmas";
-    case Method::hybrid:
-      return "hybrid";
-    case Method::hybrid_nlopt:
-      return "hybrid+nlopt";
-    case Method::nlopt:
-      return "nlopt";
-    case Method::ceres:
-      return "ceres";
-    case Method::ceres_robust:
-      return "ceres-robust";
-    case Method::random:
-      return "random";
-    case Method::exhaustive:
-      return "exhaustive";
-  }
-  return "?";
+  const MethodInfo& i = info(m);
+  return i.name.empty() ? aco::to_string(*i.variant) : i.name;
 }
 
 Method parse_method(std::string_view name) {
   std::string names;
-  for (Method m : kMethods) {
+  for (const Method m : kMethodList) {
     if (to_string(m) == name) return m;
     names += (names.empty() ? "" : ", ") + std::string(to_string(m));
   }
@@ -110,32 +115,14 @@ Method parse_method(std::string_view name) {
                               names + ")");
 }
 
-std::span<const Method> all_methods() { return kMethods; }
+std::span<const Method> all_methods() { return kMethodList; }
 
 bool is_discrete(Method m) {
   if (m == Method::hybrid_nlopt) return false;  // its choice is only the refinement's start
   return aco_variant(m).has_value() || m == Method::random || m == Method::exhaustive;
 }
 
-std::optional<aco::Variant> aco_variant(Method m) {
-  switch (m) {
-    case Method::ant_system:
-      return aco::Variant::ant_system;
-    case Method::elitist:
-      return aco::Variant::elitist;
-    case Method::rank_based:
-      return aco::Variant::rank_based;
-    case Method::acs:
-      return aco::Variant::acs;
-    case Method::mmas:
-      return aco::Variant::mmas;
-    case Method::hybrid:
-    case Method::hybrid_nlopt:
-      return aco::Variant::hybrid;
-    default:
-      return std::nullopt;
-  }
-}
+std::optional<aco::Variant> aco_variant(Method m) { return info(m).variant; }
 
 OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings,
                         const OptimizeObserver& observer) {

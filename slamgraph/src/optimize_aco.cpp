@@ -2,7 +2,7 @@
 
 #include <optional>
 
-#include "aco/backend_tbb.hpp"
+#include "aco/backend_factory.hpp"
 #include "optimize_detail.hpp"
 #include "slamgraph/slam_problem.hpp"
 
@@ -44,34 +44,27 @@ void run_aco(const FragmentSet& set, const OptimizeSettings& settings, Recorder&
   aco::Parameters p = settings.aco;
   p.variant = aco_variant(settings.method).value();
   p.seed = settings.seed;
-  const aco::ColonySettings colony_settings =
-      aco::colony_settings(p, problem.layer_count(), false, false);
-  const double rho = p.rho > 0.0 ? p.rho : aco::default_rho(p.variant, false);
   const aco::Termination termination{.max_iterations = settings.iterations,
                                      .time_limit_s = settings.time_limit_s};
   const bool refine = settings.method == Method::hybrid_nlopt;
   std::optional<PathRefiner> refiner;
   if (refine) refiner.emplace(set, settings.refine);
-  const std::uint64_t ants = colony_settings.ants;
+  const std::uint64_t ants = aco::colony_settings(p, problem.layer_count(), false, false).ants;
   std::uint64_t refine_evaluations = 0;
 
-  const auto run = [&](auto backend) {
-    return aco::with_variant_policies(p, rho, [&](auto rule, auto update) {
-      aco::Colony<SlamProblem, decltype(rule), decltype(update), aco::NoLocalSearch,
-                  decltype(backend)>
-          colony(problem, colony_settings, rule, update, {}, backend);
-      return colony.run(termination, [&](const aco::IterationReport& r) {
-        if (!r.improved) return;
-        double best = r.global_best;
-        if (refine && settings.refine_each_improvement)
-          best = std::min(best, refiner->refine(colony.best().path, refine_evaluations));
-        recorder.improve(r.iteration, r.iteration * ants + refine_evaluations, best);
-      });
-    });
+  const auto observe = [&](const aco::IterationReport& r) {
+    if (!r.improved) return;
+    double best = r.global_best;
+    if (refine && settings.refine_each_improvement)
+      best = std::min(best, refiner->refine(r.global_best_path, refine_evaluations));
+    recorder.improve(r.iteration, r.iteration * ants + refine_evaluations, best);
   };
   const aco::RunResult run_result =
-      settings.threads <= 1 ? run(aco::SerialBackend{}) : run(aco::TbbBackend(settings.threads));
+      aco::with_backend(settings.backend, settings.threads, [&](auto backend) {
+        return aco::solve(problem, p, termination, backend, aco::NoLocalSearch{}, observe);
+      });
   result.iterations = run_result.iterations;
+  result.colony = run_result.settings;
   result.choice = run_result.best.path;
   result.alignments = chosen_alignments(set, result.choice);
   if (refine) {

@@ -43,9 +43,7 @@ json best_json(const StudyResult& r) {
           {"alignments", detail::poses_json(b.alignments)},
           {"frames", detail::poses_json(b.frames)},
           {"iterations", b.iterations},
-          {"evaluations", b.evaluations},
-          {"elapsed_s", b.elapsed_s},
-          {"time_to_best_s", b.time_to_best_s}};
+          {"evaluations", b.evaluations}};
 }
 
 void read_best(const JsonField& f, StudyResult& r) {
@@ -71,8 +69,8 @@ void read_best(const JsonField& f, StudyResult& r) {
     choice.fail("expected as many entries as `alignments`");
   b.iterations = f.at("iterations").integer();
   b.evaluations = f.at("evaluations").integer();
-  b.elapsed_s = f.at("elapsed_s").number();
-  b.time_to_best_s = f.at("time_to_best_s").number();
+  if (f.has("elapsed_s")) b.elapsed_s = f.at("elapsed_s").number();  // version 1 only
+  if (f.has("time_to_best_s")) b.time_to_best_s = f.at("time_to_best_s").number();
 }
 
 /// The shortest text that reads back as the same double.
@@ -116,7 +114,6 @@ void write_result(std::ostream& out, const StudyResult& r) {
               {"trials", r.trials},
               {"weight", statistics_json(r.weight)},
               {"chi2", statistics_json(r.chi2)},
-              {"elapsed_s", statistics_json(r.elapsed_s)},
               {"best", best_json(r)}};
   if (r.error)
     doc["trajectory_error"] = {{"rmse_m", r.error->rmse_m},
@@ -145,7 +142,7 @@ StudyResult read_result(std::istream& in, const std::string& source) {
   if (r.trials == 0) root.at("trials").fail("must be >= 1");
   r.weight = read_statistics(root.at("weight"));
   r.chi2 = read_statistics(root.at("chi2"));
-  r.elapsed_s = read_statistics(root.at("elapsed_s"));
+  if (root.has("elapsed_s")) r.elapsed_s = read_statistics(root.at("elapsed_s"));  // version 1
   read_best(root.at("best"), r);
   if (root.has("trajectory_error")) {
     const JsonField e = root.at("trajectory_error");
@@ -164,21 +161,40 @@ StudyResult read_result_file(const std::filesystem::path& path) {
 
 void write_trials_csv(std::ostream& out, std::span<const OptimizeResult> trials,
                       std::uint64_t study_seed) {
-  out << "trial,seed,weight,chi2,iterations,evaluations,elapsed_s,time_to_best_s\n";
+  out << "trial,seed,weight,chi2,iterations,evaluations\n";
   for (std::size_t t = 0; t < trials.size(); ++t) {
     const OptimizeResult& r = trials[t];
     out << t << ',' << trial_seed(study_seed, t) << ',' << shortest(r.scores.weight) << ','
-        << shortest(r.scores.chi2) << ',' << r.iterations << ',' << r.evaluations << ','
-        << shortest(r.elapsed_s) << ',' << shortest(r.time_to_best_s) << '\n';
+        << shortest(r.scores.chi2) << ',' << r.iterations << ',' << r.evaluations << '\n';
   }
 }
 
 void write_convergence_csv(std::ostream& out, std::span<const OptimizeResult> trials) {
-  out << "trial,iteration,evaluations,elapsed_s,best_weight\n";
+  out << "trial,iteration,evaluations,best_weight\n";
   for (std::size_t t = 0; t < trials.size(); ++t)
     for (const ConvergencePoint& p : trials[t].convergence)
-      out << t << ',' << p.iteration << ',' << p.evaluations << ',' << shortest(p.elapsed_s) << ','
-          << shortest(p.best_weight) << '\n';
+      out << t << ',' << p.iteration << ',' << p.evaluations << ',' << shortest(p.best_weight)
+          << '\n';
+}
+
+void write_times_json(std::ostream& out, std::span<const OptimizeResult> trials) {
+  std::vector<double> elapsed;
+  json per_trial = json::array();
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    const OptimizeResult& r = trials[t];
+    elapsed.push_back(r.elapsed_s);
+    json convergence = json::array();
+    for (const ConvergencePoint& p : r.convergence)
+      convergence.push_back(json::array({p.iteration, p.elapsed_s}));
+    per_trial.push_back({{"trial", t},
+                         {"elapsed_s", r.elapsed_s},
+                         {"time_to_best_s", r.time_to_best_s},
+                         {"convergence", convergence}});
+  }
+  detail::write_json(out, json{{"format", kTimesFormat},
+                               {"version", 1},
+                               {"elapsed_s", statistics_json(statistics(elapsed))},
+                               {"trials", per_trial}});
 }
 
 }  // namespace antslam::slam

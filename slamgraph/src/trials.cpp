@@ -5,7 +5,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "aco/backend_tbb.hpp"
+#include "aco/backend_factory.hpp"
 #include "aco/random.hpp"
 
 namespace antslam::slam {
@@ -15,22 +15,24 @@ std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial) {
 }
 
 std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
-                                       std::size_t trials, std::size_t threads,
+                                       const TrialSettings& trials,
                                        const TrialsObserver& observer) {
-  if (trials == 0) throw std::invalid_argument("trials must be >= 1");
+  if (trials.trials == 0) throw std::invalid_argument("trials must be >= 1");
   validate(set);
-  std::vector<OptimizeResult> results(trials);
+  std::vector<OptimizeResult> results(trials.trials);
   std::mutex mutex;
   std::size_t finished = 0;
-  aco::TbbBackend backend(threads);
-  backend.for_each(trials, [&](std::size_t t) {
-    OptimizeSettings s = settings;
-    s.seed = trial_seed(settings.seed, t);
-    s.threads = 1;
-    results[t] = optimize(set, s);
-    const std::lock_guard lock(mutex);
-    ++finished;
-    if (observer) observer(finished);
+  aco::with_backend(trials.backend, trials.threads, [&](auto backend) {
+    backend.for_each(trials.trials, [&](std::size_t t) {
+      OptimizeSettings s = settings;
+      s.seed = trial_seed(settings.seed, t);
+      s.threads = 1;
+      s.backend = aco::BackendKind::serial;
+      results[t] = optimize(set, s);
+      const std::lock_guard lock(mutex);
+      ++finished;
+      if (observer) observer(finished);
+    });
   });
   return results;
 }

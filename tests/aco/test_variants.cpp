@@ -37,10 +37,7 @@ TEST_P(EveryVariant, FindsTheOptimumOfASmallTsp) {
   EXPECT_EQ(result.reason, StopReason::target);
 }
 
-INSTANTIATE_TEST_SUITE_P(All, EveryVariant,
-                         ::testing::Values(Variant::ant_system, Variant::elitist,
-                                           Variant::rank_based, Variant::acs, Variant::mmas,
-                                           Variant::hybrid),
+INSTANTIATE_TEST_SUITE_P(All, EveryVariant, ::testing::ValuesIn(all_variants()),
                          [](const auto& param_info) {
                            return std::string(to_string(param_info.param));
                          });

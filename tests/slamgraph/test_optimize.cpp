@@ -85,11 +85,11 @@ TEST(Trials, ResultsDoNotDependOnThreadsAndTrialsDiffer) {
   const FragmentSet set = synthesize(synth_preset("paper9"));
   const OptimizeSettings s = quick(Method::hybrid, 11);
   std::size_t last = 0;
-  const auto one = run_trials(set, s, 6, 1, [&](std::size_t done) {
+  const auto one = run_trials(set, s, {.trials = 6, .threads = 1}, [&](std::size_t done) {
     EXPECT_EQ(done, last + 1);
     last = done;
   });
-  const auto two = run_trials(set, s, 6, 2);
+  const auto two = run_trials(set, s, {.trials = 6, .threads = 2});
   EXPECT_EQ(last, 6U);
   for (std::size_t t = 0; t < 6; ++t) {
     EXPECT_EQ(one[t].choice, two[t].choice);

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
 
 #include "slamgraph/result_io.hpp"
 #include "slamgraph/synth.hpp"
@@ -16,7 +18,7 @@ TEST(ResultIo, RoundTrip) {
   OptimizeSettings s;
   s.iterations = 30;
   s.seed = 4;
-  const auto trials = run_trials(set, s, 3, 1);
+  const auto trials = run_trials(set, s, {.trials = 3, .threads = 1});
   StudyResult r = summarize("paper9.json", s, trials);
   r.error = TrajectoryError{0.25, 0.5, 1.5, 9};
   std::ostringstream out;
@@ -60,15 +62,56 @@ TEST(ResultIo, CsvFiles) {
   a.iterations = 3;
   a.evaluations = 60;
   a.convergence = {{1, 20, 0.001, 2.0}, {3, 60, 0.002, 1.5}};
-  std::ostringstream trials, convergence;
+  a.elapsed_s = 0.004;
+  a.time_to_best_s = 0.002;
+  std::ostringstream trials, convergence, times;
   write_trials_csv(trials, std::vector<OptimizeResult>{a}, 9);
   write_convergence_csv(convergence, std::vector<OptimizeResult>{a});
-  EXPECT_EQ(trials.str(),
-            "trial,seed,weight,chi2,iterations,evaluations,elapsed_s,time_to_best_s\n0," +
-                std::to_string(trial_seed(9, 0)) + ",1.5,10,3,60,0,0\n");
-  EXPECT_EQ(
-      convergence.str(),
-      "trial,iteration,evaluations,elapsed_s,best_weight\n0,1,20,0.001,2\n0,3,60,0.002,1.5\n");
+  write_times_json(times, std::vector<OptimizeResult>{a});
+  EXPECT_EQ(trials.str(), "trial,seed,weight,chi2,iterations,evaluations\n0," +
+                              std::to_string(trial_seed(9, 0)) + ",1.5,10,3,60\n");
+  EXPECT_EQ(convergence.str(), "trial,iteration,evaluations,best_weight\n0,1,20,2\n0,3,60,1.5\n");
+  const auto doc = nlohmann::json::parse(times.str());
+  EXPECT_EQ(doc["format"], "antslam-optimize-times");
+  EXPECT_EQ(doc["elapsed_s"]["mean"], 0.004);
+  EXPECT_EQ(doc["trials"][0]["time_to_best_s"], 0.002);
+  EXPECT_EQ(doc["trials"][0]["convergence"], nlohmann::json::parse("[[1, 0.001], [3, 0.002]]"));
+}
+
+TEST(ResultIo, ResultFileHasNoTimesAndIsTheSameOnEveryThreadCount) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  OptimizeSettings s;
+  s.iterations = 40;
+  const auto text = [&](std::size_t threads, aco::BackendKind backend) {
+    const auto trials = run_trials(set, s, {.trials = 4, .threads = threads, .backend = backend});
+    std::ostringstream out;
+    write_result(out, summarize("paper9", s, trials));
+    write_trials_csv(out, trials, s.seed);
+    write_convergence_csv(out, trials);
+    return out.str();
+  };
+  const std::string serial = text(1, aco::BackendKind::serial);
+  EXPECT_EQ(serial.find("elapsed"), std::string::npos);
+  EXPECT_EQ(text(2, aco::BackendKind::omp), serial);
+  EXPECT_EQ(text(2, aco::BackendKind::tbb), serial);
+}
+
+TEST(ResultIo, ReadsVersionOneFilesWithTimes) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  OptimizeSettings s;
+  s.iterations = 10;
+  const auto trials = run_trials(set, s, {.trials = 1, .threads = 1});
+  std::ostringstream out;
+  write_result(out, summarize("paper9", s, trials));
+  auto doc = nlohmann::json::parse(out.str());
+  doc["version"] = 1;
+  doc["elapsed_s"] = {{"mean", 0.5}, {"std", 0.0}, {"min", 0.5}, {"max", 0.5}};
+  doc["best"]["elapsed_s"] = 0.5;
+  doc["best"]["time_to_best_s"] = 0.25;
+  std::istringstream in(doc.dump());
+  const StudyResult back = read_result(in, "v1.json");
+  EXPECT_EQ(back.elapsed_s.mean, 0.5);
+  EXPECT_EQ(back.best.time_to_best_s, 0.25);
 }
 
 }  // namespace

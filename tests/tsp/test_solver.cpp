@@ -3,8 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include "aco/backend_omp.hpp"
-#include "aco/backend_tbb.hpp"
 #include "tsp/solver.hpp"
 #include "tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
@@ -41,8 +39,7 @@ TEST_P(EveryVariantWithLocalSearch, FindsTheOptimum) {
 
 std::vector<Case> every_variant() {
   std::vector<Case> cases;
-  for (aco::Variant v : {aco::Variant::ant_system, aco::Variant::elitist, aco::Variant::rank_based,
-                         aco::Variant::acs, aco::Variant::mmas, aco::Variant::hybrid}) {
+  for (const aco::Variant v : aco::all_variants()) {
     cases.push_back({v, "eil51", 426});
     cases.push_back({v, "berlin52", 7542});
   }
@@ -78,16 +75,40 @@ TEST_P(Determinism, SameResultOnEveryBackendAndThreadCount) {
   s.aco.seed = 11;
   s.local_search.kind = GetParam().local_search;
   const aco::Termination t{.max_iterations = 25};
-  const aco::RunResult reference = solve(problem, s, t, aco::SerialBackend{});
-  const std::vector<std::pair<std::string, aco::AnyBackend>> backends = {
-      {"omp1", aco::OmpBackend(1)}, {"omp2", aco::OmpBackend(2)}, {"tbb2", aco::TbbBackend(2)}};
-  for (const auto& [name, backend] : backends) {
-    SCOPED_TRACE(name);
-    const aco::RunResult r = solve(problem, s, t, backend);
+  const aco::RunResult reference = solve(problem, s, t);
+  EXPECT_EQ(reference.settings.backend, aco::BackendKind::serial);
+  for (const auto& [kind, threads] : {std::pair{aco::BackendKind::omp, std::size_t{1}},
+                                      std::pair{aco::BackendKind::omp, std::size_t{2}},
+                                      std::pair{aco::BackendKind::tbb, std::size_t{2}},
+                                      std::pair{aco::BackendKind::automatic, std::size_t{2}}}) {
+    SCOPED_TRACE(std::string(aco::to_string(kind)) + std::to_string(threads));
+    s.backend = kind;
+    s.threads = threads;
+    const aco::RunResult r = solve(problem, s, t);
     EXPECT_EQ(r.best.path, reference.best.path);
     EXPECT_EQ(r.best.cost, reference.best.cost);
     EXPECT_EQ(r.best_iteration, reference.best_iteration);
+    EXPECT_EQ(r.settings.threads, threads);
+    EXPECT_EQ(r.settings.backend, aco::resolve(kind, threads));
   }
+}
+
+TEST(Solver, SerialBackendOnTwoThreadsIsRefused) {
+  SolverSettings s;
+  s.backend = aco::BackendKind::serial;
+  s.threads = 2;
+  EXPECT_THROW(solve(instance_problem("eil51"), s, {.max_iterations = 1}), std::invalid_argument);
+}
+
+TEST(Solver, ResultRecordsTheSettingsThatRan) {
+  SolverSettings s;  // MMAS + 3-opt with every default
+  const aco::RunResult r = solve(instance_problem("eil51"), s, {.max_iterations = 2});
+  EXPECT_EQ(r.settings.variant, aco::Variant::mmas);
+  EXPECT_EQ(r.settings.colony.ants, 25U);
+  EXPECT_DOUBLE_EQ(r.settings.rho, 0.2);
+  EXPECT_TRUE(r.settings.local_search);
+  EXPECT_EQ(r.settings.backend, aco::BackendKind::serial);
+  EXPECT_EQ(r.settings.threads, 1U);
 }
 
 INSTANTIATE_TEST_SUITE_P(

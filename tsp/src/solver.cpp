@@ -1,5 +1,6 @@
 #include "tsp/solver.hpp"
 
+#include "aco/backend_factory.hpp"
 #include "aco/permutation_family.hpp"
 
 namespace antslam::tsp {
@@ -35,9 +36,9 @@ double resolved_rho(const SolverSettings& settings) {
 }
 
 aco::RunResult solve(const TspProblem& problem, const SolverSettings& settings,
-                     const aco::Termination& termination, aco::AnyBackend backend,
-                     const aco::Observer& observer) {
+                     const aco::Termination& termination, const aco::Observer& observer) {
   const aco::Parameters p = resolved_parameters(problem, settings);
+  aco::AnyBackend backend = aco::make_backend(settings.backend, settings.threads);
   if (!has_local_search(settings))
     return aco::solve(problem, p, termination, std::move(backend), aco::NoLocalSearch{}, observer);
   return aco::solve(problem, p, termination, std::move(backend),

@@ -1,10 +1,12 @@
 #pragma once
 // Parallel backends run the ants of one iteration. A backend only has to offer
+//   kind()                  which backend it is (backend_kind.hpp);
 //   threads()               the number of threads it uses;
 //   for_each(count, f)      calls f(i) once for every i in [0, count), in any order.
 // Ants write only to their own slots and draw from their own random streams, so a run's result
 // does not depend on the backend or on the thread count. OpenMP and TBB backends live in
-// backend_omp.hpp / backend_tbb.hpp so that only code using them links their runtimes.
+// backend_omp.hpp / backend_tbb.hpp so that only code using them links their runtimes; a
+// backend chosen by name comes from backend_factory.hpp.
 
 #include <concepts>
 #include <cstddef>
@@ -12,16 +14,20 @@
 #include <memory>
 #include <utility>
 
+#include "aco/backend_kind.hpp"
+
 namespace antslam::aco {
 
 template <class B>
 concept Backend = requires(B& b, std::size_t count, void (*f)(std::size_t)) {
+  { b.kind() } -> std::convertible_to<BackendKind>;
   { b.threads() } -> std::convertible_to<std::size_t>;
   b.for_each(count, f);
 };
 
 /// Runs everything on the calling thread.
 struct SerialBackend {
+  BackendKind kind() const { return BackendKind::serial; }
   std::size_t threads() const { return 1; }
   template <class F>
   void for_each(std::size_t count, F&& f) {
@@ -40,6 +46,7 @@ class AnyBackend {
       AnyBackend(B backend)  // NOLINT(google-explicit-constructor): implicit by design
       : self_(std::make_shared<Model<B>>(std::move(backend))) {}
 
+  BackendKind kind() const { return self_->kind(); }
   std::size_t threads() const { return self_->threads(); }
   template <class F>
   void for_each(std::size_t count, F&& f) {
@@ -49,12 +56,14 @@ class AnyBackend {
  private:
   struct Concept {
     virtual ~Concept() = default;
+    virtual BackendKind kind() const = 0;
     virtual std::size_t threads() const = 0;
     virtual void for_each(std::size_t count, const std::function<void(std::size_t)>& f) = 0;
   };
   template <class B>
   struct Model final : Concept {
     explicit Model(B b) : backend(std::move(b)) {}
+    BackendKind kind() const override { return backend.kind(); }
     std::size_t threads() const override { return backend.threads(); }
     void for_each(std::size_t count, const std::function<void(std::size_t)>& f) override {
       backend.for_each(count, f);

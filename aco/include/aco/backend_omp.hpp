@@ -7,6 +7,8 @@
 #include <exception>
 #include <mutex>
 
+#include "aco/backend_kind.hpp"
+
 namespace antslam::aco {
 
 class OmpBackend {
@@ -15,6 +17,7 @@ class OmpBackend {
   explicit OmpBackend(std::size_t threads = 0)
       : threads_(threads == 0 ? static_cast<std::size_t>(omp_get_max_threads()) : threads) {}
 
+  BackendKind kind() const { return BackendKind::omp; }
   std::size_t threads() const { return threads_; }
 
   template <class F>

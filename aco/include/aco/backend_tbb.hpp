@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <memory>
 
+#include "aco/backend_kind.hpp"
+
 namespace antslam::aco {
 
 class TbbBackend {
@@ -19,6 +21,7 @@ class TbbBackend {
     arena_->initialize();
   }
 
+  BackendKind kind() const { return BackendKind::tbb; }
   std::size_t threads() const { return static_cast<std::size_t>(arena_->max_concurrency()); }
 
   template <class F>

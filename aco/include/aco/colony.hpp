@@ -16,12 +16,14 @@
 #include <cstdint>
 #include <functional>
 #include <numeric>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
 
 #include "aco/backend.hpp"
+#include "aco/backend_kind.hpp"
 #include "aco/layered_family.hpp"
 #include "aco/local_search.hpp"
 #include "aco/permutation_family.hpp"
@@ -30,6 +32,7 @@
 #include "aco/solution.hpp"
 #include "aco/termination.hpp"
 #include "aco/update_context.hpp"
+#include "aco/variant.hpp"
 
 namespace antslam::aco {
 
@@ -56,13 +59,25 @@ struct ColonySettings {
 
 /// What the observer hears after every iteration.
 struct IterationReport {
-  std::uint64_t iteration = 0;  ///< 1-based
-  double elapsed_s = 0.0;       ///< wall-clock seconds since the run started
-  double iteration_best = 0.0;  ///< best cost of this iteration
-  double global_best = 0.0;     ///< best cost so far
-  bool improved = false;        ///< this iteration found a new global best
+  std::uint64_t iteration = 0;                      ///< 1-based
+  double elapsed_s = 0.0;                           ///< wall-clock seconds since the run started
+  double iteration_best = 0.0;                      ///< best cost of this iteration
+  double global_best = 0.0;                         ///< best cost so far
+  bool improved = false;                            ///< this iteration found a new global best
+  std::span<const std::uint32_t> global_best_path;  ///< the best path so far (valid during the
+                                                    ///< observer's call only)
 };
 using Observer = std::function<void(const IterationReport&)>;
+
+/// The settings a run actually used, every default resolved.
+struct RunSettings {
+  std::optional<Variant> variant;  ///< set by solve(); empty for a colony assembled by hand
+  double rho = 0.0;                ///< evaporation rate; set by solve(), 0 for a hand-built colony
+  ColonySettings colony;           ///< ants, alpha, beta, seed, local-search ants
+  bool local_search = false;       ///< whether a local search improved the ants
+  BackendKind backend = BackendKind::serial;  ///< the backend that ran the ants
+  std::size_t threads = 1;                    ///< its thread count
+};
 
 struct RunResult {
   Solution best;                     ///< best solution found
@@ -71,6 +86,7 @@ struct RunResult {
   double elapsed_s = 0.0;            ///< wall-clock seconds of the run
   double time_to_best_s = 0.0;       ///< wall-clock seconds until `best` was found
   StopReason reason = StopReason::iterations;
+  RunSettings settings;  ///< what ran
 };
 
 template <class Problem, class Rule, class Update, class LocalSearch = NoLocalSearch,
@@ -152,6 +168,7 @@ class Colony {
     report.improved = iteration_best.cost < best_.cost;
     if (report.improved) best_ = iteration_best;
     report.global_best = best_.cost;
+    report.global_best_path = best_.path;
     update_.apply(family_.trail(),
                   IterationView{ants_, ranking_, iteration_best, best_, iteration_});
     return report;
@@ -202,6 +219,10 @@ class Colony {
     }
     result.best = best_;
     result.iterations = iteration_;
+    result.settings.colony = settings_;
+    result.settings.local_search = kHasLocalSearch;
+    result.settings.backend = backend_.kind();
+    result.settings.threads = backend_.threads();
     return result;
   }
 

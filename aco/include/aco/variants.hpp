@@ -26,38 +26,9 @@
 #include "aco/update_ant_system.hpp"
 #include "aco/update_hybrid.hpp"
 #include "aco/update_mmas.hpp"
+#include "aco/variant.hpp"
 
 namespace antslam::aco {
-
-enum class Variant { ant_system, elitist, rank_based, acs, mmas, hybrid };
-
-constexpr std::string_view to_string(Variant v) {
-  switch (v) {
-    case Variant::ant_system:
-      return "as";
-    case Variant::elitist:
-      return "eas";
-    case Variant::rank_based:
-      return "ras";
-    case Variant::acs:
-      return "acs";
-    case Variant::mmas:
-      return "mmas";
-    case Variant::hybrid:
-      return "hybrid";
-  }
-  return "?";
-}
-
-/// GoogleTest and logs print the name.
-inline void PrintTo(Variant v, std::ostream* os) { *os << to_string(v); }
-
-constexpr std::optional<Variant> parse_variant(std::string_view name) {
-  for (Variant v : {Variant::ant_system, Variant::elitist, Variant::rank_based, Variant::acs,
-                    Variant::mmas, Variant::hybrid})
-    if (to_string(v) == name) return v;
-  return std::nullopt;
-}
 
 /// Every knob of every variant. Zero means "the variant's default" where noted.
 struct Parameters {
@@ -111,6 +82,11 @@ constexpr double default_rho(Variant v, bool local_search) {
   return 0.1;
 }
 
+/// p.rho, or the variant's default when it is 0.
+constexpr double resolved_rho(const Parameters& p, bool local_search) {
+  return p.rho > 0.0 ? p.rho : default_rho(p.variant, local_search);
+}
+
 /// Calls f(rule, update) with the policies of p.variant, configured from p; `rho` is the
 /// resolved evaporation rate. The single place where a variant name becomes types.
 template <class F>
@@ -148,10 +124,11 @@ inline ColonySettings colony_settings(const Parameters& p, std::size_t decisions
   return settings;
 }
 
-/// Runs the chosen variant on `problem` with any backend and local search.
-template <class Problem, class LocalSearch = NoLocalSearch, class Exec = AnyBackend>
-RunResult solve(const Problem& problem, const Parameters& p, const Termination& termination,
-                Exec backend = {}, LocalSearch local_search = {}, const Observer& observer = {}) {
+/// Builds the colony of p.variant on `problem` (defaults resolved) and returns f(colony): the
+/// one place where Parameters become a Colony, for callers that step it themselves.
+template <class Problem, class LocalSearch = NoLocalSearch, class Exec = AnyBackend, class F>
+decltype(auto) with_colony(const Problem& problem, const Parameters& p, Exec backend,
+                           LocalSearch local_search, F&& f) {
   constexpr bool kLs = !std::is_same_v<LocalSearch, NoLocalSearch>;
   constexpr bool kPermutation = PermutationProblem<Problem>;
   std::size_t decisions = 0;
@@ -161,12 +138,23 @@ RunResult solve(const Problem& problem, const Parameters& p, const Termination& 
     decisions = problem.layer_count();
   }
   const ColonySettings settings = colony_settings(p, decisions, kPermutation, kLs);
-  const double rho = p.rho > 0.0 ? p.rho : default_rho(p.variant, kLs);
-  return with_variant_policies(p, rho, [&](auto rule, auto update) {
+  return with_variant_policies(p, resolved_rho(p, kLs), [&](auto rule, auto update) {
     Colony<Problem, decltype(rule), decltype(update), LocalSearch, Exec> colony(
-        problem, settings, rule, update, local_search, backend);
-    return colony.run(termination, observer);
+        problem, settings, rule, update, std::move(local_search), std::move(backend));
+    return f(colony);
   });
+}
+
+/// Runs the chosen variant on `problem` with any backend and local search; the result records
+/// the settings that ran.
+template <class Problem, class LocalSearch = NoLocalSearch, class Exec = AnyBackend>
+RunResult solve(const Problem& problem, const Parameters& p, const Termination& termination,
+                Exec backend = {}, LocalSearch local_search = {}, const Observer& observer = {}) {
+  RunResult result = with_colony(problem, p, std::move(backend), std::move(local_search),
+                                 [&](auto& colony) { return colony.run(termination, observer); });
+  result.settings.variant = p.variant;
+  result.settings.rho = resolved_rho(p, result.settings.local_search);
+  return result;
 }
 
 }  // namespace antslam::aco

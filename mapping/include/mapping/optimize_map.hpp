@@ -23,6 +23,7 @@ struct MappingSettings {
   std::size_t trials = 20;  ///< independent optimizer trials (count); the lowest weight wins
   std::size_t threads = 1;  ///< threads the trials run on (0 = all cores); results do not
                             ///< depend on it
+  aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the trials in parallel
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.

@@ -1,7 +1,7 @@
 #pragma once
 // The optimizer API: one fragment set in, the corrected map out, by any method of the study
-// (issue items 6-9). Every method is scored on both objectives (eq. 10 weight and chi2), so
-// that neither is favoured silently.
+// (paper Sec. III-B and the baselines it is compared with). Every method is scored on both
+// objectives (eq. 10 weight and chi2), so that neither is favoured silently.
 //
 //   method        what
 //   as eas ras    Ant System and its elitist / rank-based forms on the tree of samples
@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "aco/backend_kind.hpp"
 #include "aco/variants.hpp"
 #include "slamgraph/ceres_baseline.hpp"
 #include "slamgraph/fragment_set.hpp"
@@ -58,8 +59,9 @@ struct OptimizeSettings {
   std::uint64_t iterations = 3000;  ///< ACO iterations (iter_max, paper Sec. IV); random: rounds
   double time_limit_s = 0.0;        ///< wall-clock budget of ACO / random in seconds; 0 = none
   std::size_t threads = 1;  ///< threads for the ants of one run; results do not depend on it
-  aco::Parameters aco;      ///< engine parameters (ants, rho, p0, ...); variant from method
-  RefineSettings refine;    ///< NLopt refinement (hybrid+nlopt, nlopt)
+  aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the ants of one iteration
+  aco::Parameters aco;    ///< engine parameters (ants, rho, p0, ...); variant from method
+  RefineSettings refine;  ///< NLopt refinement (hybrid+nlopt, nlopt)
   bool refine_each_improvement = false;  ///< hybrid+nlopt: also refine every new global-best ant
   CeresSettings ceres;                   ///< Ceres baselines
   std::uint64_t max_exhaustive_paths = 1'000'000'000;  ///< exhaustive: refuse larger trees (count)
@@ -87,6 +89,7 @@ struct OptimizeResult {
   double elapsed_s = 0.0;             ///< wall-clock seconds of the whole method
   double time_to_best_s = 0.0;        ///< wall-clock seconds until the result was found
   std::vector<ConvergencePoint> convergence;  ///< one point per improvement
+  std::optional<aco::RunSettings> colony;     ///< ACO methods: the engine settings that ran
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field (engine, NLopt, Ceres); the

@@ -19,10 +19,18 @@ std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial);
 /// Called after each trial, serialised, with the number of trials finished so far.
 using TrialsObserver = std::function<void(std::size_t finished)>;
 
-/// Runs `trials` trials of settings.method (settings.seed seeds the study, settings.threads is
-/// ignored: each trial is serial) on `threads` threads (0 = all cores).
+/// How many trials, and how they are spread over threads.
+struct TrialSettings {
+  std::size_t trials = 1;   ///< independent trials (count)
+  std::size_t threads = 0;  ///< threads the trials run on (0 = all cores)
+  aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the trials in parallel
+};
+
+/// Runs trials.trials trials of settings.method (settings.seed seeds the study; each trial is
+/// serial, so settings.threads and settings.backend are ignored), spread over trials.threads
+/// threads by trials.backend.
 std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
-                                       std::size_t trials, std::size_t threads,
+                                       const TrialSettings& trials,
                                        const TrialsObserver& observer = {});
 
 /// The trial with the lowest eq. (10) weight (the first on ties); throws on an empty span.

@@ -7,7 +7,9 @@
 // tour length C_nn, so that a tour as good as the greedy one deposits 1 (with Q = 1 of eq. 12
 // a deposit of 1/L ~ 1e-5 would be lost against tau_init = 100).
 
-#include "aco/backend.hpp"
+#include <cstddef>
+
+#include "aco/backend_kind.hpp"
 #include "aco/colony.hpp"
 #include "aco/termination.hpp"
 #include "aco/variants.hpp"
@@ -20,6 +22,8 @@ struct SolverSettings {
   aco::Parameters aco;               ///< variant and its parameters (0 = variant default)
   LocalSearchSettings local_search;  ///< improves every ant, or the aco.local_search_ants best
   double hybrid_deposit = 0.0;       ///< hybrid's deposit numerator Q; 0 = C_nn (tour length)
+  aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the ants of an iteration
+  std::size_t threads = 1;  ///< threads building ants (0 = all cores); results do not depend on it
 };
 
 /// Length of the nearest-neighbour tour from city 0 over the candidate lists (C_nn).
@@ -31,8 +35,9 @@ aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSetti
 std::size_t resolved_ants(const TspProblem& problem, const SolverSettings& settings);
 double resolved_rho(const SolverSettings& settings);
 
+/// Runs settings.aco.variant on settings.backend; the result records the settings that ran.
+/// Throws std::invalid_argument for the serial backend on more than one thread.
 aco::RunResult solve(const TspProblem& problem, const SolverSettings& settings,
-                     const aco::Termination& termination, aco::AnyBackend backend = {},
-                     const aco::Observer& observer = {});
+                     const aco::Termination& termination, const aco::Observer& observer = {});
 
 }  // namespace antslam::tsp

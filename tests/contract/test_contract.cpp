@@ -1,0 +1,91 @@
+// The colony contract (colony_contract.hpp) on every real problem the project ships: the
+// synthetic layered problem of the engine, the TSP without and with each local search, and the
+// AntSLAM problem of eq. (10) on the paper's N = 9 set.
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "aco/synthetic_layered.hpp"
+#include "colony_contract.hpp"
+#include "slamgraph/slam_problem.hpp"
+#include "slamgraph/synth.hpp"
+#include "tsp/local_search.hpp"
+#include "tsp/problem.hpp"
+#include "tsp/tsplib.hpp"
+
+namespace antslam {
+namespace {
+
+template <class Problem>
+bool feasible_layered(const Problem& problem, std::span<const std::uint32_t> path) {
+  if (path.size() != problem.layer_count()) return false;
+  for (std::size_t l = 0; l < path.size(); ++l)
+    if (path[l] >= problem.option_count(l)) return false;
+  return true;
+}
+
+struct SyntheticLayered {
+  static constexpr std::size_t kIterations = 40;
+  aco::SyntheticLayeredProblem p{8, 6, 17};
+  const aco::SyntheticLayeredProblem& problem() const { return p; }
+  aco::NoLocalSearch local_search() const { return {}; }
+  bool feasible(std::span<const std::uint32_t> path) const { return feasible_layered(p, path); }
+};
+
+/// att48 (TSPLIB, ATT distances), 8 candidates per city, with local search `Kind`.
+template <tsp::LocalSearchKind Kind>
+struct Tsp {
+  static constexpr std::size_t kIterations = 20;
+  static const tsp::TspProblem& shared() {
+    static const tsp::TspProblem p(tsp::read_instance(ANTSLAM_TSP_FIXTURES "/att48.tsp"),
+                                   tsp::ProblemSettings{.candidates = 8, .ls_neighbours = 8});
+    return p;
+  }
+  const tsp::TspProblem& problem() const { return shared(); }
+  auto local_search() const {
+    if constexpr (Kind == tsp::LocalSearchKind::none) {
+      return aco::NoLocalSearch{};
+    } else {
+      return tsp::TourLocalSearch({.kind = Kind, .neighbours = 8});
+    }
+  }
+  bool feasible(std::span<const std::uint32_t> tour) const {
+    std::vector<std::uint32_t> sorted(tour.begin(), tour.end());
+    std::sort(sorted.begin(), sorted.end());
+    for (std::uint32_t i = 0; i < sorted.size(); ++i)
+      if (sorted[i] != i) return false;
+    return sorted.size() == shared().size();
+  }
+};
+
+/// The AntSLAM problem (eq. 10) on the paper's N = 9 synthetic set, M = 20 samples.
+struct Slam {
+  static constexpr std::size_t kIterations = 40;
+  static const slam::SlamProblem& shared() {
+    static const slam::FragmentSet set = slam::synthesize(slam::synth_preset("paper9"));
+    static const slam::SlamProblem p(set);
+    return p;
+  }
+  const slam::SlamProblem& problem() const { return shared(); }
+  aco::NoLocalSearch local_search() const { return {}; }
+  bool feasible(std::span<const std::uint32_t> path) const {
+    return feasible_layered(shared(), path);
+  }
+};
+
+using TspNoLocalSearch = Tsp<tsp::LocalSearchKind::none>;
+using TspTwoOpt = Tsp<tsp::LocalSearchKind::two_opt>;
+using TspTwoHalfOpt = Tsp<tsp::LocalSearchKind::two_half_opt>;
+using TspThreeOpt = Tsp<tsp::LocalSearchKind::three_opt>;
+
+ANTSLAM_COLONY_CONTRACT(SyntheticLayered, SyntheticLayered);
+ANTSLAM_COLONY_CONTRACT(TspNoLocalSearch, TspNoLocalSearch);
+ANTSLAM_COLONY_CONTRACT(TspTwoOpt, TspTwoOpt);
+ANTSLAM_COLONY_CONTRACT(TspTwoHalfOpt, TspTwoHalfOpt);
+ANTSLAM_COLONY_CONTRACT(TspThreeOpt, TspThreeOpt);
+ANTSLAM_COLONY_CONTRACT(Slam, Slam);
+
+}  // namespace
+}  // namespace antslam
