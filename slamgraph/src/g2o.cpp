@@ -1,7 +1,6 @@
 #include "slamgraph/g2o.hpp"
 
 #include <Eigen/Cholesky>
-#include <charconv>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -37,11 +36,7 @@ std::vector<double> numbers(std::istringstream& fields, std::size_t count,
 std::uint64_t vertex_id(std::istringstream& fields, const std::string& source, std::size_t line) {
   std::string token;
   std::uint64_t id = 0;
-  if (fields >> token) {
-    const char* end = token.data() + token.size();
-    const auto [ptr, ec] = std::from_chars(token.data(), end, id);
-    if (ec == std::errc() && ptr == end) return id;
-  }
+  if (fields >> token && detail::parse_index(token, id)) return id;
   fail_at(source, line, "'" + token + "' is not a vertex id");
 }
 
@@ -151,6 +146,12 @@ Eigen::Matrix3d inverse_covariance(const Pose2& z, const Eigen::Matrix3d& covari
   return 0.5 * (out + out.transpose());
 }
 
+Gaussian2 oriented(const PoseGraphEdge& edge, std::size_t from) {
+  const Eigen::Matrix3d covariance = symmetric_inverse(edge.information);
+  if (edge.from == from) return Gaussian2(edge.measurement, covariance);
+  return Gaussian2(edge.measurement.inverse(), inverse_covariance(edge.measurement, covariance));
+}
+
 FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSettings& settings,
                                   const std::string& source) {
   if (settings.samples == 0) throw std::invalid_argument("g2o import: samples must be >= 1");
@@ -159,11 +160,6 @@ FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSetting
   FragmentSet set;
   set.name = source;
   set.fragments.resize(n);
-  const auto oriented = [](const PoseGraphEdge& e, std::size_t a) {
-    const Eigen::Matrix3d cov = symmetric_inverse(e.information);
-    if (e.from == a) return Gaussian2(e.measurement, cov);
-    return Gaussian2(e.measurement.inverse(), inverse_covariance(e.measurement, cov));
-  };
   for (const PoseGraphEdge& e : graph.edges) {
     const std::size_t a = std::min(e.from, e.to), b = std::max(e.from, e.to);
     Fragment& f = set.fragments[b];

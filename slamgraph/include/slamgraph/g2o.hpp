@@ -62,6 +62,11 @@ PoseGraph pose_graph_of(const FragmentSet& set, std::span<const Pose2> frames);
 /// std::runtime_error "source:line: problem".
 std::vector<Pose2> read_reference_poses(const std::filesystem::path& path);
 
+/// The edge's measurement as a Gaussian over the pose of the other vertex in the frame of
+/// vertex `from` (one of the edge's ends): inverted, to first order, when the edge is stored the
+/// other way round.
+Gaussian2 oriented(const PoseGraphEdge& edge, std::size_t from);
+
 /// Covariance of z^-1 for z ~ N(measurement, covariance), to first order.
 Eigen::Matrix3d inverse_covariance(const Pose2& measurement, const Eigen::Matrix3d& covariance);
 
