@@ -6,6 +6,7 @@
 
 #include "aco/backend_factory.hpp"
 #include "clique/greedy.hpp"
+#include "clique/local_search.hpp"
 #include "clique/problem.hpp"
 
 namespace antslam::clique {
@@ -23,9 +24,13 @@ AcoSearchResult maximum_clique_aco(const Graph& graph, const AcoSearchSettings& 
   const double bound = colouring_bound(graph);
   aco::Termination termination = t;
   termination.target_cost = std::max(termination.target_cost, problem.cost_of_weight(bound));
-  const aco::RunResult run = aco::with_backend(
-      settings.backend, settings.threads,
-      [&](auto backend) { return aco::solve(problem, settings.parameters, termination, backend); });
+  const auto solve = [&](auto local_search) {
+    return aco::with_backend(settings.backend, settings.threads, [&](auto backend) {
+      return aco::solve(problem, settings.parameters, termination, backend, local_search);
+    });
+  };
+  const aco::RunResult run =
+      settings.local_search ? solve(SwapLocalSearch{}) : solve(aco::NoLocalSearch{});
 
   AcoSearchResult result;
   result.iterations = run.iterations;

@@ -53,8 +53,10 @@ void validate(const RobustSettings& s) {
     throw std::invalid_argument("robust: the Cauchy scale must be a finite positive number");
   if (!(std::isfinite(s.dcs_phi) && s.dcs_phi > 0.0))
     throw std::invalid_argument("robust: DCS Phi must be a finite positive number");
-  if (!(std::isfinite(s.gnc.mu_factor) && s.gnc.mu_factor > 1.0) || s.gnc.max_steps == 0)
-    throw std::invalid_argument("robust: GNC needs a mu factor > 1 and at least one step");
+  if (!(std::isfinite(s.gnc.mu_factor) && s.gnc.mu_factor > 1.0) || s.gnc.max_steps == 0 ||
+      s.gnc.step_iterations <= 0)
+    throw std::invalid_argument(
+        "robust: GNC needs a mu factor > 1, at least one step and one iteration per step");
 }
 
 /// The odometry chain placed at vertex 0's pose: where every method starts.

@@ -12,6 +12,7 @@
 #include "clique/aco_search.hpp"
 #include "clique/exact.hpp"
 #include "clique/greedy.hpp"
+#include "clique/local_search.hpp"
 #include "clique/problem.hpp"
 #include "clique_support.hpp"
 
@@ -157,6 +158,58 @@ TEST(Aco, RejectsAnUnboundedRunAndAnEmptyGraph) {
   s.termination = {};
   EXPECT_THROW(maximum_clique_aco(complete_graph(3), s), std::invalid_argument);
   EXPECT_THROW(maximum_clique_aco(Graph(0, {})), std::invalid_argument);
+}
+
+// Clique {0, 1, 2} is maximal; 3 and 4 are adjacent to each other and to 0 and 1 but not to 2:
+// the (1,2)-swap trades 2 for 3 and 4, then 5 (adjacent to 0, 1, 3, 4) is added.
+Graph swap_graph(std::vector<double> weights) {
+  const std::vector<Edge> edges{{0, 1}, {0, 2}, {1, 2}, {0, 3}, {1, 3}, {0, 4}, {1, 4},
+                                {3, 4}, {0, 5}, {1, 5}, {3, 5}, {4, 5}, {2, 6}};
+  return Graph(7, edges, std::move(weights));
+}
+
+TEST(LocalSearch, SwapsOneForTwoAndStaysMaximal) {
+  const Graph g = swap_graph({});
+  const CliqueProblem p(g);
+  const SwapLocalSearch ls;
+  SwapLocalSearch::Workspace ws = ls.make_workspace(p);
+  aco::Rng rng(1);
+  std::vector<std::uint32_t> clique{0, 1, 2};
+  ASSERT_TRUE(is_maximal_clique(g, clique));
+  ls.improve(p, clique, ws, rng, {});
+  std::sort(clique.begin(), clique.end());
+  EXPECT_EQ(clique, (std::vector<std::uint32_t>{0, 1, 3, 4, 5}));
+  EXPECT_TRUE(is_maximal_clique(g, clique));
+}
+
+TEST(LocalSearch, KeepsAHeavierVertex) {
+  const Graph g = swap_graph({1, 1, 9, 1, 1, 1, 1});  // 2 outweighs 3 + 4 (+ 5)
+  const CliqueProblem p(g);
+  const SwapLocalSearch ls;
+  SwapLocalSearch::Workspace ws = ls.make_workspace(p);
+  aco::Rng rng(1);
+  std::vector<std::uint32_t> clique{0, 1, 2};
+  ls.improve(p, clique, ws, rng, {});
+  EXPECT_EQ(clique, (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(LocalSearch, NeverLighterAlwaysMaximalOnRandomGraphs) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Graph g = random_graph(40, 0.6, seed, 3);
+    const CliqueProblem p(g);
+    const SwapLocalSearch ls;
+    SwapLocalSearch::Workspace ws = ls.make_workspace(p);
+    aco::Rng rng(seed);
+    std::vector<std::uint32_t> clique{static_cast<std::uint32_t>(seed)};  // grown to maximal
+    for (std::uint32_t v = 0; v < g.size(); ++v)
+      if (std::all_of(clique.begin(), clique.end(),
+                      [&](std::uint32_t c) { return g.adjacent(c, v); }))
+        clique.push_back(v);
+    const double before = weight_of(g, clique);
+    ls.improve(p, clique, ws, rng, {});
+    EXPECT_TRUE(is_maximal_clique(g, clique));
+    EXPECT_GE(weight_of(g, clique), before);
+  }
 }
 
 TEST(Problem, CostAndHeuristic) {

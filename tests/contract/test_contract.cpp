@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "aco/synthetic_layered.hpp"
+#include "clique/local_search.hpp"
 #include "clique/problem.hpp"
 #include "colony_contract.hpp"
 #include "slamgraph/slam_problem.hpp"
@@ -77,8 +78,10 @@ struct Slam {
   }
 };
 
-/// Maximum weighted clique on G(60, 0.5) with weights 1..4: a set is feasible when it is a
-/// maximal clique (the construction stops only when no candidate is left).
+/// Maximum weighted clique on G(60, 0.5) with weights 1..4, without or with the (1,2)-swap
+/// local search: a set is feasible when it is a maximal clique (the construction stops only
+/// when no candidate is left, and the swaps keep it maximal).
+template <bool kSwaps>
 struct Clique {
   static constexpr std::size_t kIterations = 30;
   static const clique::Graph& graph() {
@@ -99,7 +102,13 @@ struct Clique {
     return p;
   }
   const clique::CliqueProblem& problem() const { return shared(); }
-  aco::NoLocalSearch local_search() const { return {}; }
+  auto local_search() const {
+    if constexpr (kSwaps) {
+      return clique::SwapLocalSearch{};
+    } else {
+      return aco::NoLocalSearch{};
+    }
+  }
   bool feasible(std::span<const std::uint32_t> set) const {
     return clique::is_maximal_clique(graph(), set);
   }
@@ -116,7 +125,11 @@ ANTSLAM_COLONY_CONTRACT(TspTwoOpt, TspTwoOpt);
 ANTSLAM_COLONY_CONTRACT(TspTwoHalfOpt, TspTwoHalfOpt);
 ANTSLAM_COLONY_CONTRACT(TspThreeOpt, TspThreeOpt);
 ANTSLAM_COLONY_CONTRACT(Slam, Slam);
-ANTSLAM_COLONY_CONTRACT(Clique, Clique);
+using CliqueNoLocalSearch = Clique<false>;
+using CliqueSwaps = Clique<true>;
+
+ANTSLAM_COLONY_CONTRACT(CliqueNoLocalSearch, CliqueNoLocalSearch);
+ANTSLAM_COLONY_CONTRACT(CliqueSwaps, CliqueSwaps);
 
 }  // namespace
 }  // namespace antslam

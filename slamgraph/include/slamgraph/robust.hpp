@@ -6,7 +6,8 @@
 //   dcs        dynamic covariance scaling on the closures (Agarwal et al. 2013);
 //   gnc        graduated non-convexity with a truncated-least-squares cost (Yang et al. 2020):
 //              weighted least squares whose closure weights follow the GNC-TLS rule as the
-//              surrogate's parameter mu grows, from a convex start to the TLS cost;
+//              surrogate's parameter mu grows, from a convex start to the TLS cost, then least
+//              squares on the closures it kept;
 //   pcm-exact  the maximum clique of pairwise consistent closures (PCM, Mangelson et al. 2018)
 //              by branch and bound, then least squares on it;
 //   pcm-aco    the same clique found by the ants (Ant-Clique), then least squares on it.
@@ -56,6 +57,9 @@ struct GncSettings {
   double mu_factor = 1.4;          ///< mu grows by this factor per step (Yang et al. 2020)
   std::size_t max_steps = 1000;    ///< graduation steps at most (count)
   double weight_tolerance = 1e-6;  ///< weights this close to 0 or 1 count as decided
+  int step_iterations = 10;        ///< Levenberg-Marquardt iterations per step (count), each
+                                   ///< step warm-started from the last; the final solve on the
+                                   ///< kept closures runs to convergence (RobustSettings::ceres)
 };
 
 struct RobustSettings {
