@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   antslam::cli::add_simulate_odometry_command(app);
   antslam::cli::add_tinyslam_command(app);
   antslam::cli::add_fragment_set_command(app);
+  antslam::cli::add_outliers_command(app);
+  antslam::cli::add_robust_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -14,7 +14,6 @@
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
-#include "eval/alignment.hpp"
 #include "eval/ate.hpp"
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
@@ -77,11 +76,8 @@ std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
 /// The best trial's fragment frames against the reference, after rigid SE(2) alignment.
 slam::TrajectoryError trajectory_error(std::span<const slam::Pose2> frames,
                                        std::span<const slam::Pose2> reference) {
-  std::vector<eval::PosePair> pairs;
-  for (std::size_t i = 0; i < frames.size(); ++i)
-    pairs.push_back({i, i, static_cast<double>(i), frames[i], reference[i]});
-  const eval::AteResult ate = eval::ate(pairs, eval::align(pairs));
-  return {ate.translation_m.rmse, ate.translation_m.max, ate.rotation_deg.rmse, pairs.size()};
+  const eval::AteResult ate = eval::indexed_ate(frames, reference);
+  return {ate.translation_m.rmse, ate.translation_m.max, ate.rotation_deg.rmse, frames.size()};
 }
 
 void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
