@@ -144,4 +144,13 @@ ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& 
   return result;
 }
 
+ConsistencyGraph pairwise_consistency(const FragmentSet& set, const ConsistencySettings& settings) {
+  validate(set);
+  std::vector<Pose2> means;
+  for (std::size_t i = 1; i < set.fragments.size(); ++i)
+    means.push_back(set.fragments[i].alignment->mean());
+  const PoseGraph graph = pose_graph_of(set, chain(means));
+  return pairwise_consistency(graph, split_chain(graph, set.name), settings);
+}
+
 }  // namespace antslam::slam

@@ -192,6 +192,21 @@ TEST(Consistency, GraphHoldsExactlyThePairsBelowTheThresholdOnEveryBackend) {
   EXPECT_THROW(pairwise_consistency(t.graph, split, {1.5}), std::invalid_argument);
 }
 
+TEST(Consistency, AFragmentSetGivesTheSameGraphAsItsPoseGraph) {
+  testing::TrueGraph t = testing::square_laps(4, 5, 2, 0.05, 4);
+  aco::Rng rng(8);
+  for (int f = 0; f < 6; ++f)
+    t.graph.edges.push_back({rng.below(40), 40 + rng.below(40), Pose2{0.1, -0.1, 0.05},
+                             100.0 * Eigen::Matrix3d::Identity()});
+  const FragmentSet set = fragment_set_from_g2o(t.graph, {.samples = 1}, "square");
+  const ConsistencyGraph from_set = pairwise_consistency(set);
+  const ConsistencyGraph from_graph = pairwise_consistency(t.graph, split_chain(t.graph, "square"));
+  EXPECT_EQ(from_set.closures, set.closures.size());
+  EXPECT_EQ(from_set.pairs, from_graph.pairs);
+  EXPECT_EQ(from_set.odometry_consistent, from_graph.odometry_consistent);
+  EXPECT_LT(from_set.pairs.size(), from_set.closures * (from_set.closures - 1) / 2);
+}
+
 TEST(Consistency, NoiseFreeClosuresAreAllConsistent) {
   const testing::TrueGraph t = testing::square_laps(3, 5, 1, 0.0, 1);
   const ChainSplit split = split_chain(t.graph, "square");

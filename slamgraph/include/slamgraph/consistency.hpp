@@ -28,6 +28,7 @@
 
 #include "aco/backend_kind.hpp"
 #include "slamgraph/chain.hpp"
+#include "slamgraph/fragment_set.hpp"
 #include "slamgraph/g2o.hpp"
 
 namespace antslam::slam {
@@ -70,6 +71,12 @@ class CycleTest {
 
 /// Throws std::invalid_argument for a confidence outside (0, 1) or serial on several threads.
 ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& split,
+                                      const ConsistencySettings& settings = {});
+
+/// The same for a fragment set: its alignments are the chain and its loop closures the closures,
+/// in set.closures order (through pose_graph_of). Throws std::invalid_argument for an invalid
+/// set.
+ConsistencyGraph pairwise_consistency(const FragmentSet& set,
                                       const ConsistencySettings& settings = {});
 
 }  // namespace antslam::slam
