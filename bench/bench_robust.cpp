@@ -28,6 +28,13 @@ Spoiled manhattan(std::int64_t outliers) {
   return s;
 }
 
+/// 0 and 1000 false closures, 1 and 2 threads, wall-clock milliseconds.
+void outliers_and_threads(benchmark::internal::Benchmark* b) {
+  for (const std::int64_t outliers : {0, 1000})
+    for (const std::int64_t threads : {1, 2}) b->Args({outliers, threads});
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
 void BM_PairwiseConsistency(benchmark::State& state) {
   const Spoiled s = manhattan(state.range(0));
   const slam::ConsistencySettings settings{.threads = static_cast<std::size_t>(state.range(1))};
@@ -39,13 +46,7 @@ void BM_PairwiseConsistency(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pairs));
 }
-BENCHMARK(BM_PairwiseConsistency)
-    ->Args({0, 1})
-    ->Args({0, 2})
-    ->Args({1000, 1})
-    ->Args({1000, 2})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_PairwiseConsistency)->Apply(outliers_and_threads);
 
 // 20 iterations of MAX-MIN ants with (1,2)-swaps on the consistency graph.
 void BM_AntClique(benchmark::State& state) {
@@ -60,13 +61,7 @@ void BM_AntClique(benchmark::State& state) {
     benchmark::DoNotOptimize(r.clique.weight);
   }
 }
-BENCHMARK(BM_AntClique)
-    ->Args({0, 1})
-    ->Args({0, 2})
-    ->Args({1000, 1})
-    ->Args({1000, 2})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_AntClique)->Apply(outliers_and_threads);
 
 }  // namespace
 
