@@ -1,7 +1,8 @@
 // `antslam eval EST REF`: scores an estimated trajectory against a reference, both in TUM format
 // (docs/evaluation.md): ATE after rigid SE(2) alignment, RPE over a frame or distance step and,
-// with --relations, the relations metric of Kuemmerle et al. 2009. Table on stdout, JSON on
-// request.
+// with --relations, the relations metric of Kuemmerle et al. 2009; with --fragment-set, the
+// set's alignments and loop closures against the reference (precision and recall of the
+// closures). Table on stdout, JSON on request.
 
 #include <charconv>
 #include <cmath>
@@ -16,8 +17,10 @@
 #include "cli/atomic_file.hpp"
 #include "commands.hpp"
 #include "eval/alignment.hpp"
+#include "eval/fragment_set_check.hpp"
 #include "eval/relations.hpp"
 #include "eval/report.hpp"
+#include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/trajectory.hpp"
 
 namespace antslam::cli {
@@ -28,6 +31,7 @@ struct EvalOptions {
   std::filesystem::path estimate;      ///< TUM file
   std::filesystem::path reference;     ///< TUM file
   std::filesystem::path relations;     ///< Kuemmerle relations file; empty = none
+  std::filesystem::path fragment_set;  ///< fragment set to check; empty = none
   std::filesystem::path json;          ///< JSON result file; empty = none
   std::filesystem::path aligned;       ///< TUM file for the aligned estimate; empty = none
   eval::EvaluationSettings settings;   ///< tolerances (s), RPE step; align set from no_align
@@ -68,6 +72,20 @@ void run_eval(EvalOptions options) {
       eval::evaluate(estimate, reference, options.settings, relations);
 
   eval::print_table(std::cout, evaluation);
+  std::optional<eval::FragmentSetCheck> check;
+  if (!options.fragment_set.empty()) {
+    eval::FragmentSetCheckSettings settings;
+    settings.max_dt = options.settings.max_dt;
+    check = eval::check_fragment_set(slam::read_fragment_set_file(options.fragment_set), reference,
+                                     settings);
+    const auto percent = [](const std::optional<double>& v) {
+      return v ? std::to_string(static_cast<int>(std::lround(100.0 * *v))) + " %" : "-";
+    };
+    std::cout << "loop closures: " << check->correct_closures << " of " << check->checked_closures
+              << " correct (precision " << percent(check->precision()) << "), "
+              << check->revisits_closed << " of " << check->revisits
+              << " revisiting fragments closed (recall " << percent(check->recall()) << ")\n";
+  }
   if (!options.aligned.empty()) {
     const slam::Trajectory aligned = eval::transformed(estimate, evaluation.ate.alignment);
     write_atomically(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
@@ -77,6 +95,10 @@ void run_eval(EvalOptions options) {
     json["estimate"] = options.estimate.string();
     json["reference"] = options.reference.string();
     if (!options.relations.empty()) json["relations"]["file"] = options.relations.string();
+    if (check) {
+      json["fragment_set"] = eval::to_json(*check);
+      json["fragment_set"]["file"] = options.fragment_set.string();
+    }
     write_atomically(options.json, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
   }
 }
@@ -109,6 +131,8 @@ void add_eval_command(CLI::App& app) {
                   "tolerance between relation and estimate timestamps, seconds")
       ->capture_default_str()
       ->check(finite_number(true));
+  cmd->add_option("--fragment-set", options->fragment_set,
+                  "fragment set (JSON) whose alignments and loop closures to check against REF");
   cmd->add_option("--json", options->json, "write the results as JSON to this file");
   cmd->add_option("--aligned-out", options->aligned,
                   "write the estimate moved by the ATE alignment to this TUM file");
