@@ -118,10 +118,14 @@ nlohmann::json to_json(const FragmentSetCheck& check) {
     }
     closures.push_back(entry);
   }
-  std::size_t inconsistent = 0;
+  nlohmann::json inconsistent = nlohmann::json::array();
   double worst = 0.0;
   for (const GaussianCheck& a : check.alignments) {
-    inconsistent += a.has_reference && a.mahalanobis > 3.0 ? 1U : 0U;
+    if (a.has_reference && a.mahalanobis > 3.0)
+      inconsistent.push_back({{"fragment", a.to},
+                              {"translation_error_m", a.translation_error},
+                              {"rotation_error_deg", a.rotation_error * degrees},
+                              {"mahalanobis", a.mahalanobis}});
     worst = std::max(worst, a.mahalanobis);
   }
   const auto optional = [](const std::optional<double>& v) {
@@ -133,7 +137,8 @@ nlohmann::json to_json(const FragmentSetCheck& check) {
           {"revisits", check.revisits},
           {"revisits_closed", check.revisits_closed},
           {"recall", optional(check.recall())},
-          {"alignments_beyond_3_sigma", inconsistent},
+          {"alignments_beyond_3_sigma", inconsistent.size()},
+          {"alignments_beyond_3_sigma_list", inconsistent},
           {"alignment_mahalanobis_max", worst},
           {"closures", closures}};
 }

@@ -25,6 +25,15 @@ void add_frontend_options(CLI::App& command, FrontendOptions& o) {
       .add_option("--temperature", o.settings.matcher.temperature,
                   "scan-matcher likelihood temperature")
       ->capture_default_str();
+  command
+      .add_option("--divergence-sigmas", o.settings.matcher.divergence_sigmas,
+                  "a scan match further from the odometry prediction (standard deviations) "
+                  "is kept only if it fits --trusted-fit of its points, else the odometry is")
+      ->capture_default_str();
+  command
+      .add_option("--trusted-fit", o.settings.matcher.trusted_fit,
+                  "share of a scan's points that must fit for a match to overrule the odometry")
+      ->capture_default_str();
   add_sensor_options(command, o.sensor);
   command.add_flag("--no-closures", o.no_closures, "do not look for loop closures");
   command

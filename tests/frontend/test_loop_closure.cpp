@@ -122,5 +122,26 @@ TEST(LoopClosure, TheFrontendClosesASimulatedLoop) {
   }
 }
 
+TEST(LoopClosure, NeighboursOfTheCandidateJoinItsMap) {
+  // A later fragment seldom sees what one earlier fragment saw: matched against the candidate
+  // and its neighbours, more revisits close, and every accepted match is still right.
+  SimulationSettings sim;
+  sim.beams = 181;
+  sim.step = 0.35;
+  std::vector<V> path = loop_waypoints();
+  path.push_back(V(8, 0));
+  const SimulatedRun run = simulate_run(loop_world(), path, sim, 4);
+  FrontendSettings alone;
+  alone.closure.target_neighbours = 0;
+  const FrontendResult single = run_frontend(run.log, alone);
+  const FrontendResult joined = run_frontend(run.log, FrontendSettings{});
+  const auto accepted = [](const FrontendResult& r) {
+    std::size_t n = 0;
+    for (const ClosureAttempt& a : r.attempts) n += a.match.accepted ? 1U : 0U;
+    return n;
+  };
+  EXPECT_GT(accepted(joined), accepted(single));
+}
+
 }  // namespace
 }  // namespace antslam::frontend
