@@ -2,6 +2,7 @@
 
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "eval/alignment.hpp"
@@ -43,6 +44,18 @@ Evaluation evaluate(const slam::Trajectory& estimate, const slam::Trajectory& re
   if (!relations.empty())
     result.relations = relations_error(estimate, relations, settings.relations_max_dt);
   return result;
+}
+
+slam::TrajectoryError frames_error(std::span<const slam::Pose2> frames,
+                                   std::span<const slam::Pose2> reference) {
+  if (frames.size() != reference.size())
+    throw std::invalid_argument("frames_error: " + std::to_string(frames.size()) + " poses, " +
+                                std::to_string(reference.size()) + " reference poses");
+  std::vector<PosePair> pairs;
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    pairs.push_back({i, i, static_cast<double>(i), frames[i], reference[i]});
+  const AteResult e = ate(pairs, align(pairs));
+  return {e.translation_m.rmse, e.translation_m.max, e.rotation_deg.rmse, pairs.size()};
 }
 
 }  // namespace antslam::eval

@@ -34,8 +34,7 @@ void run(FragmentSetOptions o) {
   frontend::validate(o.frontend.settings);  // before reading the log
   const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.frontend.sensor.overrides());
   Progress progress;
-  const frontend::FrontendResult result =
-      run_frontend(log, o.frontend.settings, o.log.filename().string(), progress);
+  const frontend::FrontendResult result = run_frontend(log, o.frontend.settings, progress);
   progress.clear();
   slam::validate(result.fragment_set);  // e.g. no loop closure found: say so, write nothing
   write_atomically(o.out,

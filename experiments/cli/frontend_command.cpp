@@ -5,22 +5,20 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "aco/random.hpp"
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/image.hpp"
 #include "frontend/laser_log.hpp"
 #include "frontend/map_render.hpp"
+#include "frontend/report.hpp"
 #include "frontend_options.hpp"
-#include "frontend_report.hpp"
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/trajectory.hpp"
 
@@ -42,22 +40,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The average map over `count` random sample sequences (one sample of eq. (7) per fragment,
-/// placed by eq. (8)): the spread of maps the optimizer chooses from, drawn like Fig. 5b.
-fe::Image sample_average(const fe::LaserLog& log, const fe::FrontendResult& r, std::size_t count,
-                         std::uint64_t seed, const fe::MapRenderSettings& settings) {
-  const slam::FragmentSet& set = r.fragment_set;
-  const std::size_t samples = set.fragments.size() > 1 ? set.fragments[1].samples.size() : 0;
-  std::vector<std::vector<slam::Pose2>> trials;
-  aco::Rng rng(aco::mix_seed(seed, 0xA7E5));
-  for (std::size_t t = 0; t < count; ++t) {
-    std::vector<std::uint32_t> choice(set.layer_count());
-    for (std::uint32_t& c : choice) c = rng.below(static_cast<std::uint32_t>(samples));
-    trials.push_back(slam::world_frames(set, choice));
-  }
-  return fe::render_average_map(log, fe::map_layout(r), trials, settings);
-}
-
 void run(FrontendCommandOptions c) {
   const auto start = std::chrono::steady_clock::now();
   FrontendOptions& o = c.frontend;
@@ -69,8 +51,7 @@ void run(FrontendCommandOptions c) {
   const double read_seconds = seconds_since(start);
   Progress progress;
   const auto matching = std::chrono::steady_clock::now();
-  const fe::FrontendResult result =
-      run_frontend(log, o.settings, c.log.filename().string(), progress);
+  const fe::FrontendResult result = run_frontend(log, o.settings, progress);
   const double frontend_seconds = seconds_since(matching);
   progress.update("frontend: drawing the map", true);
 
@@ -81,8 +62,8 @@ void run(FrontendCommandOptions c) {
   std::string average_png;
   if (c.average_samples > 0 && result.fragments.size() > 1) {
     progress.update("frontend: averaging maps of random sample sequences", true);
-    average_png = fe::encode_png(
-        sample_average(log, result, c.average_samples, o.settings.fragmentation.seed, o.map));
+    average_png = fe::encode_png(fe::render_sample_average_map(
+        log, result, c.average_samples, o.settings.fragmentation.seed, o.map));
   }
   const double map_seconds = seconds_since(drawing);
   progress.clear();
@@ -99,8 +80,8 @@ void run(FrontendCommandOptions c) {
       {"scans_per_second", static_cast<double>(log.scans.size()) / frontend_seconds},
       {"map_s", map_seconds},
       {"total_s", seconds_since(start)}};
-  nlohmann::json report = frontend_input_json(c.log.string(), log, o);
-  report.update(frontend_result_json(result));
+  nlohmann::json report = fe::input_json(c.log.string(), log, o.settings, o.map);
+  report.update(fe::result_json(result));
   report["times"] = times;
   write_atomically(c.out / "report.json",
                    [&](std::ostream& out) { out << report.dump(2) << '\n'; });

@@ -1,5 +1,7 @@
 #include "frontend_options.hpp"
 
+#include "frontend/report.hpp"
+
 namespace antslam::cli {
 
 void add_frontend_options(CLI::App& command, FrontendOptions& o) {
@@ -56,23 +58,16 @@ void add_map_options(CLI::App& command, FrontendOptions& o) {
 }
 
 void resolve(FrontendOptions& o) {
-  if (o.alignment == "exit-scan")
-    o.settings.fragmentation.covariance = frontend::AlignmentCovariance::exit_scan;
+  o.settings.fragmentation.covariance = frontend::parse_alignment_covariance(o.alignment);
   o.settings.closure.enabled = !o.no_closures;
 }
 
 frontend::FrontendResult run_frontend(const frontend::LaserLog& log,
                                       const frontend::FrontendSettings& settings,
-                                      const std::string& name, Progress& progress) {
-  frontend::Frontend frontend(settings, name);
-  for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    frontend.add_scan(log.scans[i]);
-    progress.update("frontend: scan " + std::to_string(i + 1) + "/" +
-                    std::to_string(log.scans.size()) + ", fragments " +
-                    std::to_string(frontend.fragment_count()) + ", closures " +
-                    std::to_string(frontend.closure_count()));
-  }
-  return frontend.finish();
+                                      Progress& progress) {
+  return frontend::run_frontend(log, settings, [&](const frontend::FrontendProgress& p) {
+    progress.update(frontend::to_string(p));
+  });
 }
 
 }  // namespace antslam::cli

@@ -25,15 +25,10 @@ struct OdometryOptions {
 void run(const OdometryOptions& o) {
   const frontend::LaserLog log = frontend::read_carmen_file(o.log);
   slam::Trajectory odometry;
-  double length = 0.0;
-  for (const frontend::LaserScan& scan : log.scans) {
-    if (!odometry.empty())
-      length += (scan.odometry.translation() - odometry.back().pose.translation()).norm();
-    odometry.push_back({scan.stamp, scan.odometry});
-  }
+  for (const frontend::LaserScan& scan : log.scans) odometry.push_back({scan.stamp, scan.odometry});
   write_atomically(o.out, [&](std::ostream& out) { slam::write_tum(out, odometry); });
   std::printf("%s: %zu scans, odometry path %.1f m; wrote %s\n", o.log.string().c_str(),
-              odometry.size(), length, o.out.string().c_str());
+              odometry.size(), slam::path_length(odometry), o.out.string().c_str());
 }
 
 }  // namespace

@@ -14,8 +14,7 @@
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
-#include "eval/alignment.hpp"
-#include "eval/ate.hpp"
+#include "eval/evaluation.hpp"
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
@@ -39,49 +38,23 @@ struct OptimizeOptions {
   slam::OptimizeSettings s;  ///< resolved from `optimizer`
 };
 
-slam::FragmentSet load(const OptimizeOptions& o) {
-  if (std::filesystem::path(o.input).extension() != ".g2o")
-    return slam::read_fragment_set_file(o.input);
-  return slam::fragment_set_from_g2o(slam::read_g2o_file(o.input), o.import, o.input);
-}
-
-std::vector<slam::Pose2> reference(const OptimizeOptions& o, const slam::FragmentSet& set) {
-  if (o.reference.empty()) return set.reference;
-  std::vector<slam::Pose2> poses = slam::read_reference_poses(o.reference);
-  if (poses.size() != set.fragments.size())
-    throw std::runtime_error(o.reference + ": has " + std::to_string(poses.size()) +
-                             " poses, the fragment set " + std::to_string(set.fragments.size()));
-  return poses;
-}
-
 std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
                                             const OptimizeOptions& o) {
   Progress progress;
-  if (o.trials > 1) {
-    return slam::run_trials(set, o.s, {o.trials, o.threads, o.s.backend}, [&](std::size_t done) {
-      progress.update("trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
-                      done == o.trials);
-    });
-  }
-  slam::OptimizeSettings s = o.s;
-  s.seed = slam::trial_seed(o.s.seed, 0);  // trial 0 of the study, as with --trials > 1
-  s.threads = o.threads;
-  return {slam::optimize(set, s, [&](const slam::ConvergencePoint& p) {
-    char line[128];
-    std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
-                  static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
-    progress.update(line);
-  })};
-}
-
-/// The best trial's fragment frames against the reference, after rigid SE(2) alignment.
-slam::TrajectoryError trajectory_error(std::span<const slam::Pose2> frames,
-                                       std::span<const slam::Pose2> reference) {
-  std::vector<eval::PosePair> pairs;
-  for (std::size_t i = 0; i < frames.size(); ++i)
-    pairs.push_back({i, i, static_cast<double>(i), frames[i], reference[i]});
-  const eval::AteResult ate = eval::ate(pairs, eval::align(pairs));
-  return {ate.translation_m.rmse, ate.translation_m.max, ate.rotation_deg.rmse, pairs.size()};
+  return slam::run_trials(
+      set, o.s, {o.trials, o.threads, o.s.backend},
+      [&](std::size_t done) {
+        if (o.trials > 1)
+          progress.update(
+              "trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
+              done == o.trials);
+      },
+      [&](const slam::ConvergencePoint& p) {
+        char line[128];
+        std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
+                      static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
+        progress.update(line);
+      });
 }
 
 void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
@@ -106,11 +79,11 @@ void run(const OptimizeOptions& options) {
   o.s = optimize_settings(o.optimizer);
   if (o.trials == 0) throw std::invalid_argument("--trials must be >= 1");
   if (o.threads == 0) o.threads = std::max(1U, std::thread::hardware_concurrency());
-  const slam::FragmentSet set = load(o);
-  const std::vector<slam::Pose2> ref = reference(o, set);
+  const slam::FragmentSet set = slam::read_optimizer_input(o.input, o.import);
+  const std::vector<slam::Pose2> reference = slam::reference_frames(set, o.reference);
   const std::vector<slam::OptimizeResult> trials = run_study(set, o);
   slam::StudyResult r = slam::summarize(o.input, o.s, trials);
-  if (!ref.empty()) r.error = trajectory_error(r.best.frames, ref);
+  if (!reference.empty()) r.error = eval::frames_error(r.best.frames, reference);
   print_summary(r, set, o);
 
   const std::string prefix =

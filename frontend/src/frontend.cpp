@@ -1,6 +1,7 @@
 #include "frontend/frontend.hpp"
 
 #include <chrono>
+#include <filesystem>
 
 namespace antslam::frontend {
 
@@ -75,9 +76,19 @@ FrontendResult Frontend::finish() {
   return result;
 }
 
-FrontendResult run_frontend(const LaserLog& log, const FrontendSettings& settings) {
-  Frontend frontend(settings, log.source);
-  for (const LaserScan& scan : log.scans) frontend.add_scan(scan);
+std::string to_string(const FrontendProgress& p) {
+  return "frontend: scan " + std::to_string(p.scan) + "/" + std::to_string(p.scans) +
+         ", fragments " + std::to_string(p.fragments) + ", closures " + std::to_string(p.closures);
+}
+
+FrontendResult run_frontend(const LaserLog& log, const FrontendSettings& settings,
+                            const FrontendObserver& observer) {
+  Frontend frontend(settings, std::filesystem::path(log.source).filename().string());
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    frontend.add_scan(log.scans[i]);
+    if (observer)
+      observer({i + 1, log.scans.size(), frontend.fragment_count(), frontend.closure_count()});
+  }
   return frontend.finish();
 }
 

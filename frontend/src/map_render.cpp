@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "aco/random.hpp"
+
 namespace antslam::frontend {
 
 namespace {
@@ -237,6 +239,21 @@ Image render_average_map(const LaserLog& log, const MapLayout& layout,
       image.at(x, f.height - 1 - y) = Rgb{grey, grey, grey};
     }
   return image;
+}
+
+Image render_sample_average_map(const LaserLog& log, const FrontendResult& result,
+                                std::size_t count, std::uint64_t seed,
+                                const MapRenderSettings& settings) {
+  const slam::FragmentSet& set = result.fragment_set;
+  const std::size_t samples = set.fragments.size() > 1 ? set.fragments[1].samples.size() : 0;
+  std::vector<std::vector<slam::Pose2>> trials;
+  aco::Rng rng(aco::mix_seed(seed, 0xA7E5));
+  for (std::size_t t = 0; t < count; ++t) {
+    std::vector<std::uint32_t> choice(set.layer_count());
+    for (std::uint32_t& c : choice) c = rng.below(static_cast<std::uint32_t>(samples));
+    trials.push_back(slam::world_frames(set, choice));
+  }
+  return render_average_map(log, map_layout(result), trials, settings);
 }
 
 }  // namespace antslam::frontend

@@ -51,4 +51,11 @@ void write_tum(std::ostream& out, const Trajectory& trajectory) {
   }
 }
 
+double path_length(const Trajectory& trajectory) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < trajectory.size(); ++i)
+    length += (trajectory[i].pose.translation() - trajectory[i - 1].pose.translation()).norm();
+  return length;
+}
+
 }  // namespace antslam::slam

@@ -51,5 +51,12 @@ TEST(Tum, RejectsMalformedLinesWithFileAndLine) {
   expect_error("1 0 0 0 0 0 0 1 9\n", "bad.tum:1: unexpected extra field '9'");
 }
 
+TEST(Trajectory, PathLengthByHand) {
+  const Trajectory t{{0.0, {0, 0, 0}}, {1.0, {3, 4, 1}}, {2.0, {3, 4, -2}}, {3.0, {3, 1, 0}}};
+  EXPECT_DOUBLE_EQ(path_length(t), 5.0 + 0.0 + 3.0);
+  EXPECT_EQ(path_length(Trajectory{}), 0.0);
+  EXPECT_EQ(path_length(Trajectory{{0.0, {7, 7, 0}}}), 0.0);
+}
+
 }  // namespace
 }  // namespace antslam::slam

@@ -4,6 +4,7 @@
 // (eq. (7)), and loop closures with hypotheses N(mu_H, Sigma_H).
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -81,7 +82,20 @@ class Frontend {
   FrontendStats stats_;
 };
 
-/// Runs the frontend over a whole log.
-FrontendResult run_frontend(const LaserLog& log, const FrontendSettings& settings);
+/// Where run_frontend is, after each scan.
+struct FrontendProgress {
+  std::size_t scan = 0;       ///< scans processed so far
+  std::size_t scans = 0;      ///< scans in the log
+  std::size_t fragments = 0;  ///< fragments started so far
+  std::size_t closures = 0;   ///< loop closures accepted so far
+};
+using FrontendObserver = std::function<void(const FrontendProgress&)>;
+
+/// "frontend: scan 12/225, fragments 3, closures 1", for progress lines.
+std::string to_string(const FrontendProgress& progress);
+
+/// Runs the frontend over a whole log; the fragment set is named after the log's file name.
+FrontendResult run_frontend(const LaserLog& log, const FrontendSettings& settings,
+                            const FrontendObserver& observer = {});
 
 }  // namespace antslam::frontend

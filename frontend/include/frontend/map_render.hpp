@@ -6,6 +6,7 @@
 // Each beam clears the cells it crosses and marks the cell it ends in (log-odds).
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -52,5 +53,12 @@ Image render_map(const LaserLog& log, const MapLayout& layout, std::span<const s
 Image render_average_map(const LaserLog& log, const MapLayout& layout,
                          std::span<const std::vector<slam::Pose2>> trials,
                          const MapRenderSettings& settings);
+
+/// The average map over `count` random sample sequences of a frontend run (one sample of
+/// eq. (7) per fragment, placed by eq. (8)), drawn like Fig. 5b: the spread of maps the
+/// optimizer chooses from. The sequences are drawn from one stream seeded by `seed`.
+Image render_sample_average_map(const LaserLog& log, const FrontendResult& result,
+                                std::size_t count, std::uint64_t seed,
+                                const MapRenderSettings& settings);
 
 }  // namespace antslam::frontend

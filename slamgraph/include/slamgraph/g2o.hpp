@@ -62,6 +62,16 @@ PoseGraph pose_graph_of(const FragmentSet& set, std::span<const Pose2> frames);
 /// std::runtime_error "source:line: problem".
 std::vector<Pose2> read_reference_poses(const std::filesystem::path& path);
 
+/// A fragment set from a file: fragment_set_from_g2o of a pose graph if the name ends in .g2o,
+/// a fragment-set JSON (fragment_set_io.hpp) otherwise.
+FragmentSet read_optimizer_input(const std::filesystem::path& path,
+                                 const G2oImportSettings& settings);
+
+/// Reference poses of the set's fragments: the set's own `reference` if `path` is empty, else
+/// read_reference_poses(path). Throws std::runtime_error if a file's pose count is not the
+/// set's fragment count.
+std::vector<Pose2> reference_frames(const FragmentSet& set, const std::filesystem::path& path);
+
 /// Covariance of z^-1 for z ~ N(measurement, covariance), to first order.
 Eigen::Matrix3d inverse_covariance(const Pose2& measurement, const Eigen::Matrix3d& covariance);
 

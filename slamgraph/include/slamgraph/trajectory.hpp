@@ -25,6 +25,9 @@ using Trajectory = std::vector<StampedPose>;
 Trajectory read_tum(std::istream& in, const std::string& source);
 Trajectory read_tum_file(const std::filesystem::path& path);
 
+/// The length of the path through the trajectory's positions, metres.
+double path_length(const Trajectory& trajectory);
+
 /// Writes one line per pose with z = 0 and a yaw-only quaternion; timestamps with microseconds.
 void write_tum(std::ostream& out, const Trajectory& trajectory);
 

@@ -1,14 +1,17 @@
-#include "map_report.hpp"
+#include "mapping/report.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "eval/report.hpp"
-#include "frontend_report.hpp"
+#include "frontend/report.hpp"
 #include "slamgraph/refine.hpp"
 #include "slamgraph/trials.hpp"
 
-namespace antslam::cli {
+namespace antslam::mapping {
 
+using frontend::gaussian_json;
+using frontend::pose_json;
 using nlohmann::json;
 
 namespace {
@@ -19,14 +22,14 @@ json statistics_json(const slam::Statistics& s) {
 
 json scores_json(const slam::Scores& s) { return {{"weight", s.weight}, {"chi2", s.chi2}}; }
 
-json residual_json(const mapping::ClosureResidual& r) {
+json residual_json(const ClosureResidual& r) {
   return {{"residual", pose_json(r.residual)}, {"mahalanobis", r.mahalanobis}};
 }
 
 }  // namespace
 
-json optimization_json(const slam::FragmentSet& set, const mapping::MappingSettings& settings,
-                       const mapping::MappingResult& r) {
+json optimization_json(const slam::FragmentSet& set, const MappingSettings& settings,
+                       const MappingResult& r) {
   const slam::OptimizeSettings& s = settings.optimize;
   std::vector<double> weights, chi2, seconds;
   json trials = json::array();
@@ -76,7 +79,7 @@ json optimization_json(const slam::FragmentSet& set, const mapping::MappingSetti
           {"alignments", alignments}};
 }
 
-json closures_json(const slam::FragmentSet& set, const mapping::MappingResult& r) {
+json closures_json(const slam::FragmentSet& set, const MappingResult& r) {
   json out = json::array();
   for (std::size_t c = 0; c < set.closures.size(); ++c)
     out.push_back({{"from", set.closures[c].from},
@@ -95,4 +98,22 @@ json evaluation_json(const MapEvaluation& e) {
           {"optimized", eval::to_json(e.optimized)}};
 }
 
-}  // namespace antslam::cli
+json report_json(const std::string& log_path, const PipelineSettings& settings,
+                 const PipelineResult& r) {
+  const slam::FragmentSet& set = r.frontend.fragment_set;
+  json report = frontend::input_json(log_path, r.log, settings.frontend, settings.map);
+  report["frontend"] = frontend::result_json(r.frontend);
+  report["optimization"] = optimization_json(set, settings.mapping, r.mapping);
+  report["closures"] = closures_json(set, r.mapping);
+  if (r.evaluation) report["evaluation"] = evaluation_json(*r.evaluation);
+  report["times"] = {{"read_s", r.times.read_s},
+                     {"frontend_s", r.times.frontend_s},
+                     {"scan_matching_s", r.frontend.stats.matching_seconds},
+                     {"loop_closure_s", r.frontend.stats.closure_seconds},
+                     {"optimization_s", r.times.optimization_s},
+                     {"maps_s", r.times.maps_s},
+                     {"total_s", r.times.total_s}};
+  return report;
+}
+
+}  // namespace antslam::mapping
