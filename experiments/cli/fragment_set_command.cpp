@@ -32,7 +32,7 @@ struct FragmentSetOptions {
 void run(FragmentSetOptions o) {
   resolve(o.frontend);
   frontend::validate(o.frontend.settings);  // before reading the log
-  const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.frontend.sensor.overrides());
+  const frontend::LaserLog log = read_laser_log(o.log, o.frontend.sensor);
   Progress progress;
   const frontend::FrontendResult result = run_frontend(log, o.frontend.settings, progress);
   progress.clear();

@@ -47,7 +47,7 @@ void run(FrontendCommandOptions c) {
   fe::validate(o.map);
   fe::validate(o.settings);
 
-  const fe::LaserLog log = fe::read_carmen_file(c.log, o.sensor.overrides());
+  const fe::LaserLog log = read_laser_log(c.log, o.sensor);
   const double read_seconds = seconds_since(start);
   Progress progress;
   const auto matching = std::chrono::steady_clock::now();

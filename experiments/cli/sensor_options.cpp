@@ -1,5 +1,6 @@
 #include "sensor_options.hpp"
 
+#include <cstdio>
 #include <numbers>
 
 namespace antslam::cli {
@@ -12,6 +13,13 @@ frontend::SensorOverrides SensorOptions::overrides() const {
   o.max_range = max_range;
   o.laser_offset = laser_offset;
   return o;
+}
+
+frontend::LaserLog read_laser_log(const std::filesystem::path& path, const SensorOptions& options) {
+  frontend::LaserLog log = frontend::read_carmen_file(path, options.overrides());
+  for (const std::string& w : log.warnings)
+    std::fprintf(stderr, "warning: %s: %s\n", path.string().c_str(), w.c_str());
+  return log;
 }
 
 void add_sensor_options(CLI::App& command, SensorOptions& options) {

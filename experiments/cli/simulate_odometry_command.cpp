@@ -37,8 +37,8 @@ struct SimulateOptions {
 
 void run(const SimulateOptions& o) {
   frontend::validate(o.noise);
-  const frontend::OdometryBenchmark b = frontend::simulate_odometry(
-      frontend::read_carmen_file(o.log, o.sensor.overrides()), o.noise, o.seed);
+  const frontend::OdometryBenchmark b =
+      frontend::simulate_odometry(read_laser_log(o.log, o.sensor), o.noise, o.seed);
 
   std::ostringstream noise;
   noise << "linear " << o.noise.linear << " m/m, angular " << o.noise.angular << " rad/rad, drift "

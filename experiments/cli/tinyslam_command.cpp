@@ -33,7 +33,7 @@ struct TinySlamOptions {
 
 void run(const TinySlamOptions& o) {
   baselines::validate(o.settings);
-  const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.sensor.overrides());
+  const frontend::LaserLog log = read_laser_log(o.log, o.sensor);
   Progress progress;
   const auto start = std::chrono::steady_clock::now();
   const baselines::TinySlamResult result =

@@ -2,11 +2,14 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "frontend/sensor_check.hpp"
 
 namespace antslam::frontend {
 
@@ -151,9 +154,16 @@ void apply_param(const LineReader& in, const Tokens& tokens, SensorGeometry& geo
     geometry.field_of_view =
         fov <= 2.0 * std::numbers::pi + 1e-6 ? fov : fov * std::numbers::pi / 180.0;
     if (!(geometry.field_of_view > 0.0)) in.fail("laser_front_laser_fov must be positive");
+    geometry.field_of_view_declared = true;
+  } else if (name == "laser_front_laser_resolution") {
+    const double degrees = in.number(2, "laser_front_laser_resolution");
+    if (!(degrees > 0.0 && degrees <= 10.0))
+      in.fail("laser_front_laser_resolution must be in (0, 10] degrees");
+    geometry.angle_step = degrees * std::numbers::pi / 180.0;
   } else if (name == "robot_front_laser_max") {
     geometry.max_range = in.number(2, "robot_front_laser_max");
     if (!(geometry.max_range > 0.0)) in.fail("robot_front_laser_max must be positive");
+    geometry.max_range_declared = true;
   } else if (name == "robot_frontlaser_offset") {
     geometry.laser_pose.x = in.number(2, "robot_frontlaser_offset");
   }
@@ -161,8 +171,10 @@ void apply_param(const LineReader& in, const Tokens& tokens, SensorGeometry& geo
 
 void apply_overrides(const SensorOverrides& o, SensorGeometry& g) {
   if (o.field_of_view) g.field_of_view = *o.field_of_view;
+  g.field_of_view_declared = g.field_of_view_declared || o.field_of_view.has_value();
   if (o.first_angle) g.first_angle = *o.first_angle;
   if (o.max_range) g.max_range = *o.max_range;
+  g.max_range_declared = g.max_range_declared || o.max_range.has_value();
   if (o.laser_offset) g.laser_pose = slam::Pose2{*o.laser_offset, 0.0, 0.0};
 }
 
@@ -218,6 +230,14 @@ LaserLog parse_carmen(std::string_view text, const std::string& source,
 
   SensorGeometry& g = log.flaser_geometry;
   apply_overrides(overrides, g);
+  // A declared resolution without a field of view: the first FLASER scan's beams span it.
+  const auto first = std::find(is_flaser.begin(), is_flaser.end(), true);
+  if (g.angle_step && !g.field_of_view_declared && first != is_flaser.end()) {
+    const std::size_t beams =
+        log.scans[static_cast<std::size_t>(first - is_flaser.begin())].ranges.size();
+    g.field_of_view =
+        std::min(2.0 * std::numbers::pi, *g.angle_step * static_cast<double>(beams - 1));
+  }
   const double flaser_first = g.first_angle.value_or(-0.5 * g.field_of_view);
   for (std::size_t i = 0; i < log.scans.size(); ++i) {
     LaserScan& scan = log.scans[i];
@@ -234,6 +254,7 @@ LaserLog parse_carmen(std::string_view text, const std::string& source,
     if (overrides.max_range) scan.max_range = *overrides.max_range;
     if (overrides.laser_offset) scan.laser_pose = slam::Pose2{*overrides.laser_offset, 0.0, 0.0};
   }
+  check_sensor(log);
   return log;
 }
 

@@ -25,6 +25,10 @@ struct SensorGeometry {
   std::optional<double> first_angle;         ///< radians; none: -field_of_view / 2
   double max_range = 80.0;                   ///< metres; readings >= this are "no return"
   slam::Pose2 laser_pose;                    ///< laser frame in the robot frame (x forward)
+  std::optional<double> angle_step;          ///< radians between beams, if the log declares it
+                                             ///< (without a field of view: it sets the field)
+  bool field_of_view_declared = false;       ///< a PARAM line or an override gave it
+  bool max_range_declared = false;           ///< a PARAM line or an override gave it
 };
 
 /// Command-line overrides; each set field replaces what the log says (PARAM lines and
@@ -51,18 +55,24 @@ struct LaserScan {
 };
 
 struct LaserLog {
-  std::string source;                ///< file name (for messages)
-  std::vector<LaserScan> scans;      ///< FLASER and ROBOTLASER1 messages, in file order
-  slam::Trajectory odometry;         ///< ODOM messages, in file order
-  SensorGeometry flaser_geometry;    ///< geometry applied to FLASER scans (PARAMs + overrides)
-  std::size_t skipped_messages = 0;  ///< lines of other message types (SYNC, NEFF, RAWLASER, ...)
+  std::string source;                 ///< file name (for messages)
+  std::vector<LaserScan> scans;       ///< FLASER and ROBOTLASER1 messages, in file order
+  slam::Trajectory odometry;          ///< ODOM messages, in file order
+  SensorGeometry flaser_geometry;     ///< geometry applied to FLASER scans (PARAMs + overrides)
+  std::size_t skipped_messages = 0;   ///< lines of other message types (SYNC, NEFF, RAWLASER, ...)
+  std::vector<std::string> warnings;  ///< one line each: what the reader found doubtful or changed
+                                      ///< (sensor_check.hpp)
 };
 
 /// Parses a CARMEN log held in memory. `source` names it in error messages. PARAM lines set the
-/// FLASER geometry (laser_front_laser_fov in degrees, or radians if <= 2 pi; robot_front_laser_max;
-/// robot_frontlaser_offset); the last value in the file wins; `overrides` win over everything.
-/// Throws std::runtime_error "source:line: problem" on malformed lines (wrong field counts,
-/// non-numbers, non-finite or negative values) and on a log without scans.
+/// FLASER geometry (laser_front_laser_fov in degrees, or radians if <= 2 pi;
+/// laser_front_laser_resolution in degrees, which without a field of view makes it the
+/// resolution times the beams less one; robot_front_laser_max; robot_frontlaser_offset); the
+/// last value in the file wins; `overrides` win over everything. The scans are then checked
+/// (check_sensor: no-return spikes, readings above the maximum, beams against the field of
+/// view), which may add warnings. Throws std::runtime_error "source:line: problem" on malformed
+/// lines (wrong field counts, non-numbers, non-finite or negative values) and on a log without
+/// scans.
 LaserLog parse_carmen(std::string_view text, const std::string& source,
                       const SensorOverrides& overrides = {});
 
