@@ -35,6 +35,9 @@ struct MapOptions {
   bool no_maps = false;
 };
 
+/// Closures are listed one a line up to this many; beyond, only those outside 2 sigma.
+constexpr std::size_t kListedClosures = 20;
+
 void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
   const slam::FragmentSet& set = r.frontend.fragment_set;
   const mapping::MappingResult& mr = r.mapping;
@@ -46,20 +49,26 @@ void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
   std::printf("%s, %zu trials (%.2f s): weight (eq. 10) %.4f -> %.4f, chi2 %.6g -> %.6g\n",
               o.optimizer.method.c_str(), mr.trials.size(), mr.seconds, mr.scan_matcher.weight,
               best.scores.weight, mr.scan_matcher.chi2, best.scores.chi2);
-  std::size_t within = 0;
-  std::printf("loop closures (Mahalanobis distance of the residual, scan matcher -> optimized):\n");
+  std::printf(
+      "loop closures (Mahalanobis distance of the residual, scan matcher -> optimized)%s:\n",
+      mr.after.size() > kListedClosures ? ", those outside 2 sigma" : "");
   for (std::size_t c = 0; c < mr.after.size(); ++c) {
     const bool ok = mr.after[c].mahalanobis <= mapping::kClosureSigmas;
-    within += ok ? 1 : 0;
+    if (ok && mr.after.size() > kListedClosures) continue;
     std::printf("  %3zu-%-3zu %9.2f -> %6.2f  %s\n", mr.after[c].from, mr.after[c].to,
                 mr.before[c].mahalanobis, mr.after[c].mahalanobis,
                 ok ? "within 2 sigma" : "OUTSIDE 2 sigma");
   }
-  std::printf("  %zu of %zu closures within their 2-sigma ellipse\n", within, mr.after.size());
+  std::printf("  %zu of %zu closures within their 2-sigma ellipse\n",
+              mr.after.size() - r.verdict.outside.size(), mr.after.size());
   if (r.evaluation)
     std::printf("ATE RMSE vs %s: scan matcher %.4f m, optimized %.4f m (%zu poses)\n",
                 r.evaluation->reference.c_str(), r.evaluation->scan_matcher.ate.translation_m.rmse,
                 r.evaluation->optimized.ate.translation_m.rmse, r.evaluation->optimized.associated);
+  for (const std::size_t c : r.verdict.outside)
+    std::printf("warning: loop closure %zu-%zu is %.2f sigma from its hypothesis in the map\n",
+                mr.after[c].from, mr.after[c].to, mr.after[c].mahalanobis);
+  for (const std::string& w : r.warnings) std::printf("warning: %s\n", w.c_str());
 }
 
 void run(MapOptions o) {
@@ -90,6 +99,10 @@ void run(MapOptions o) {
                    [&](std::ostream& out) { slam::write_tum(out, r.mapping.corrected); });
   write_atomically(scan_matcher,
                    [&](std::ostream& out) { slam::write_tum(out, r.frontend.trajectory); });
+  write_atomically(report, [&](std::ostream& out) {
+    out << mapping::report_json(o.log.string(), s, r).dump(2) << '\n';
+  });
+  // The maps last: the trajectory, fragment set and report are there whatever happens to them.
   std::vector<std::filesystem::path> maps;
   if (r.maps) {
     maps = {o.out / "map-scan-matcher.png", o.out / "map-optimized.png", o.out / "map-average.png"};
@@ -97,14 +110,13 @@ void run(MapOptions o) {
     write_atomically(maps[1], frontend::encode_png(r.maps->optimized));
     write_atomically(maps[2], frontend::encode_png(r.maps->average));
   }
-  write_atomically(report, [&](std::ostream& out) {
-    out << mapping::report_json(o.log.string(), s, r).dump(2) << '\n';
-  });
 
   print_summary(o, r);
   std::printf("wrote %s, %s, %s, %s\n", set_path.string().c_str(), trajectory.string().c_str(),
               scan_matcher.string().c_str(), report.string().c_str());
-  for (const std::filesystem::path& p : maps) std::printf("map: %s\n", p.string().c_str());
+  for (const std::filesystem::path& p : maps)
+    std::printf("map: %s (%.3f m per pixel)\n", p.string().c_str(), r.maps->resolution);
+  std::printf("%s\n", r.verdict.line.c_str());
 }
 
 }  // namespace

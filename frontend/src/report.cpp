@@ -23,8 +23,8 @@ std::string_view to_string(AlignmentCovariance covariance) {
 }
 
 AlignmentCovariance parse_alignment_covariance(std::string_view name) {
-  for (const AlignmentCovariance c : {AlignmentCovariance::accumulated,
-                                      AlignmentCovariance::exit_scan})
+  for (const AlignmentCovariance c :
+       {AlignmentCovariance::accumulated, AlignmentCovariance::exit_scan})
     if (to_string(c) == name) return c;
   throw std::invalid_argument("unknown alignment covariance '" + std::string(name) +
                               "' (accumulated, exit-scan)");

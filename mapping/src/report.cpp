@@ -98,6 +98,21 @@ json evaluation_json(const MapEvaluation& e) {
           {"optimized", eval::to_json(e.optimized)}};
 }
 
+json verdict_json(const slam::FragmentSet& set, const Verdict& v) {
+  json outside = json::array();
+  for (const std::size_t c : v.outside)
+    outside.push_back({{"from", set.closures[c].from}, {"to", set.closures[c].to}});
+  return {{"doubtful", v.doubtful},
+          {"closures", v.closures},
+          {"closures_outside_2_sigma", outside},
+          {"largest_closure_mahalanobis", v.largest_closure},
+          {"scans", v.scans},
+          {"odometry_fallbacks", v.fallbacks},
+          {"largest_alignment_mahalanobis", v.largest_alignment},
+          {"largest_alignment_fragment", v.largest_alignment_fragment},
+          {"line", v.line}};
+}
+
 json report_json(const std::string& log_path, const PipelineSettings& settings,
                  const PipelineResult& r) {
   const slam::FragmentSet& set = r.frontend.fragment_set;
@@ -106,6 +121,9 @@ json report_json(const std::string& log_path, const PipelineSettings& settings,
   report["optimization"] = optimization_json(set, settings.mapping, r.mapping);
   report["closures"] = closures_json(set, r.mapping);
   if (r.evaluation) report["evaluation"] = evaluation_json(*r.evaluation);
+  if (r.maps) report["maps"] = {{"resolution_m", r.maps->resolution}};
+  report["warnings"] = r.warnings;
+  report["verdict"] = verdict_json(set, r.verdict);
   report["times"] = {{"read_s", r.times.read_s},
                      {"frontend_s", r.times.frontend_s},
                      {"scan_matching_s", r.frontend.stats.matching_seconds},

@@ -26,6 +26,9 @@ nlohmann::json closures_json(const slam::FragmentSet& set, const MappingResult& 
 /// Both trajectories' errors against the reference (antslam eval's figures).
 nlohmann::json evaluation_json(const MapEvaluation& evaluation);
 
+/// The verdict: closures outside 2 sigma (by fragment pair), fallbacks, largest residuals, line.
+nlohmann::json verdict_json(const slam::FragmentSet& set, const Verdict& verdict);
+
 /// The whole report of a pipeline run on the log at `log_path`.
 nlohmann::json report_json(const std::string& log_path, const PipelineSettings& settings,
                            const PipelineResult& result);
