@@ -83,7 +83,7 @@ TEST(Mapping, OptimisedMapHonoursEveryClosureAndComposesTheTrajectory) {
   ASSERT_EQ(r.trials.size(), 3U);
   for (const slam::OptimizeResult& t : r.trials)
     EXPECT_LE(r.trials[r.best].scores.weight, t.scores.weight);
-  // The acceptance: every closure within its Gaussian's 2-sigma ellipse afterwards.
+  // Acceptance: every closure within its Gaussian's 2-sigma ellipse afterwards.
   ASSERT_EQ(r.after.size(), set.closures.size());
   for (const ClosureResidual& c : r.after) EXPECT_LE(c.mahalanobis, 2.0) << c.from << "-" << c.to;
   EXPECT_LT(r.trials[r.best].scores.weight, r.scan_matcher.weight);

@@ -1,5 +1,5 @@
 #pragma once
-// Ceres pose-graph optimisation on the same graph (issue item 8): the comparison with
+// Ceres pose-graph optimisation on the same graph: the comparison with
 // state-of-the-art optimisation that the paper asks for (Sec. V).
 //
 // Unknowns: the world poses of F_2..F_N (F_1 = W is held constant). Residual blocks: one per

@@ -1,5 +1,5 @@
 #pragma once
-// 2D pose graphs in g2o format (issue item 5): `VERTEX_SE2 id x y theta` and
+// 2D pose graphs in g2o format: `VERTEX_SE2 id x y theta` and
 // `EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33` (the measurement is the pose of j in i's
 // frame; I is the upper triangle of the information matrix). Standard graphs become fragment
 // sets, and results go back to g2o, so every optimizer runs on data/posegraphs.

@@ -1,5 +1,5 @@
 #pragma once
-// NLopt local refinement (issue item 7): continuous optimisation of the alignments X_2..X_N,
+// NLopt local refinement: continuous optimisation of the alignments X_2..X_N,
 // minimising the same eq. (10) weight as the ants (AlignmentObjective, analytic gradient),
 // starting from a discrete ACO result or any other alignments.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// Discrete baselines on the same tree of samples (issue item 8): exhaustive search, which proves
+// Discrete baselines on the same tree of samples: exhaustive search, which proves
 // optimality on small sets, and uniform random sampling, which shows what the ants add at the
 // same evaluation budget.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Synthetic fragment sets with known ground truth (issue item 4), for tests, benchmarks and the
+// Synthetic fragment sets with known ground truth, for tests, benchmarks and the
 // choice of parameters.
 //
 // The robot drives `laps` times around a rectangle of perimeter `loop_length_m` at 1 m/s,
