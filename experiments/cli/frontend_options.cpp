@@ -47,6 +47,10 @@ void add_frontend_options(CLI::App& command, FrontendOptions& o) {
                   "reject a closure if a separate peak scores this share of the best")
       ->capture_default_str();
   command
+      .add_option("--closure-neighbours", o.settings.closure.target_neighbours,
+                  "fragments on each side of a closure candidate that join its map")
+      ->capture_default_str();
+  command
       .add_option("--closure-temperature", o.settings.closure.temperature,
                   "divides the loop-closure log-likelihood (widens N(mu_H, Sigma_H))")
       ->capture_default_str();
