@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -49,6 +50,21 @@ void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
   std::printf("%s, %zu trials (%.2f s): weight (eq. 10) %.4f -> %.4f, chi2 %.6g -> %.6g\n",
               o.optimizer.method.c_str(), mr.trials.size(), mr.seconds, mr.scan_matcher.weight,
               best.scores.weight, mr.scan_matcher.chi2, best.scores.chi2);
+  if (mr.closing) {
+    std::string distrusted;
+    for (std::size_t c = 0; c < set.closures.size(); ++c)
+      if (!mr.closing->trusted[c])
+        distrusted +=
+            " " + std::to_string(set.closures[c].from) + "-" + std::to_string(set.closures[c].to);
+    const auto trusted = static_cast<std::size_t>(
+        std::count(mr.closing->trusted.begin(), mr.closing->trusted.end(), true));
+    std::printf(
+        "loops closed by least squares with %zu of %zu closures (%s%s): weight %.4f, "
+        "chi2 %.6g\n",
+        trusted, set.closures.size(),
+        distrusted.empty() ? "all consistent" : "distrusted:", distrusted.c_str(), mr.scores.weight,
+        mr.scores.chi2);
+  }
   std::printf(
       "loop closures (Mahalanobis distance of the residual, scan matcher -> optimized)%s:\n",
       mr.after.size() > kListedClosures ? ", those outside 2 sigma" : "");
@@ -143,6 +159,10 @@ void add_map_command(CLI::App& app) {
   sub->add_option("--reference", o.reference,
                   "reference trajectory (TUM) to evaluate both trajectories against");
   sub->add_flag("--no-maps", o.no_maps, "do not draw the maps");
+  sub->add_flag(
+      "--no-closing", [&o](std::int64_t) { o.mapping.closing.enabled = false; },
+      "keep the best trial's map: do not close the loops with the trusted closures by least "
+      "squares afterwards");
   add_optimizer_options(*sub, o.optimizer);
   add_frontend_options(*sub, o.frontend);
   add_map_options(*sub, o.frontend);

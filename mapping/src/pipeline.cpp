@@ -40,8 +40,7 @@ PipelineMaps draw_maps(PipelineResult& r, frontend::MapRenderSettings settings,
   frontend::Image scan_matcher =
       frontend::render_map(r.log, layout, m.scan_matcher_frames, settings);
   report(observer, "maps: optimized", true);
-  frontend::Image optimized =
-      frontend::render_map(r.log, layout, m.trials[m.best].frames, settings);
+  frontend::Image optimized = frontend::render_map(r.log, layout, m.frames, settings);
   report(observer, "maps: average of " + std::to_string(m.trials.size()) + " trials", true);
   placements.erase(placements.begin());
   return {std::move(scan_matcher), std::move(optimized),

@@ -49,18 +49,28 @@ json optimization_json(const slam::FragmentSet& set, const MappingSettings& sett
     trials.push_back(entry);
   }
   const slam::OptimizeResult& best = r.trials[r.best];
+  const std::vector<slam::Pose2> map_alignments = slam::relative_alignments(r.frames);
   json alignments = json::array();
-  for (std::size_t i = 0; i < best.alignments.size(); ++i) {
+  for (std::size_t i = 0; i < map_alignments.size(); ++i) {
     const slam::Gaussian2& g = *set.fragments[i + 1].alignment;
-    const Eigen::Vector3d d = g.residual(best.alignments[i]);
+    const Eigen::Vector3d d = g.residual(map_alignments[i]);
     const double m2 = d.dot(g.information() * d);
     alignments.push_back({{"fragment", i + 1},
-                          {"pose", pose_json(best.alignments[i])},
+                          {"pose", pose_json(map_alignments[i])},
                           {"mahalanobis", std::sqrt(m2)},
                           {"term", 1.0 - std::exp(-0.5 * m2)}});
   }
   json frames = json::array();
-  for (const slam::Pose2& f : best.frames) frames.push_back(pose_json(f));
+  for (const slam::Pose2& f : r.frames) frames.push_back(pose_json(f));
+  json closing = {{"enabled", r.closing.has_value()}};
+  if (r.closing) {
+    json distrusted = json::array();
+    for (std::size_t c = 0; c < set.closures.size(); ++c)
+      if (!r.closing->trusted[c])
+        distrusted.push_back({{"from", set.closures[c].from}, {"to", set.closures[c].to}});
+    closing["solves"] = r.closing->solves;
+    closing["distrusted"] = distrusted;
+  }
   return {{"method", slam::to_string(s.method)},
           {"seed", s.seed},
           {"trials", r.trials.size()},
@@ -71,6 +81,8 @@ json optimization_json(const slam::FragmentSet& set, const MappingSettings& sett
           {"scan_matcher", scores_json(r.scan_matcher)},
           {"best_trial", r.best},
           {"best", scores_json(best.scores)},
+          {"closing", closing},
+          {"map", scores_json(r.scores)},
           {"weight", statistics_json(slam::statistics(weights))},
           {"chi2", statistics_json(slam::statistics(chi2))},
           {"elapsed_s", statistics_json(slam::statistics(seconds))},
@@ -88,6 +100,7 @@ json closures_json(const slam::FragmentSet& set, const MappingResult& r) {
                    {"hypothesis", gaussian_json(set.closures[c].hypothesis)},
                    {"scan_matcher", residual_json(r.before[c])},
                    {"optimized", residual_json(r.after[c])},
+                   {"trusted", !r.closing || r.closing->trusted[c]},
                    {"within_2_sigma", r.after[c].mahalanobis <= kClosureSigmas}});
   return out;
 }

@@ -18,8 +18,7 @@ Verdict judge(const frontend::FrontendResult& frontend, const MappingResult& map
       v.largest_closure_index = c;
     }
   }
-  const std::vector<slam::Pose2> alignments =
-      slam::relative_alignments(mapping.trials[mapping.best].frames);
+  const std::vector<slam::Pose2> alignments = slam::relative_alignments(mapping.frames);
   for (std::size_t i = 0; i < alignments.size(); ++i) {
     const double m = std::sqrt(set.fragments[i + 1].alignment->mahalanobis_squared(alignments[i]));
     if (m > v.largest_alignment) {
