@@ -57,7 +57,8 @@ TARGET = 0.30
 COLUMNS = ["sweep", "log", "level", "seed", "scans", "path_m", "odometry_ate_m",
            "scan_matcher_ate_m", "ate_m", "ceres_ate_m", "ceres_true_closures_ate_m",
            "relations_m", "closures", "closures_within_2_sigma", "closures_checked",
-           "closures_correct", "revisits", "revisits_closed", "alignments_beyond_3_sigma",
+           "closures_correct", "closures_distrusted", "revisits", "revisits_closed",
+           "alignments_beyond_3_sigma",
            "alignment_mahalanobis_max", "fallbacks", "recovered", "doubtful", "seconds",
            "failure_class", "error"]
 
@@ -175,7 +176,8 @@ def run_one(args, run):
         row.update(scans=report["scans"], closures=len(closures),
                    closures_within_2_sigma=sum(c["within_2_sigma"] for c in closures),
                    fallbacks=report["verdict"]["odometry_fallbacks"],
-                   recovered=counts["recovered_scans"], doubtful=report["verdict"]["doubtful"])
+                   recovered=counts["recovered_scans"], doubtful=report["verdict"]["doubtful"],
+                   closures_distrusted=len(report["optimization"]["closing"].get("distrusted", [])))
         if reference:
             fragment_set = os.path.join(mapped, "fragment-set.json")
             e = evaluate(args, os.path.join(mapped, "trajectory.tum"), reference, work,
@@ -242,13 +244,14 @@ def summary(rows):
             f"{total(group, 'closures_within_2_sigma')} of {total(group, 'closures')}",
             f"{total(group, 'closures_correct')} of {checked}" if checked else "-",
             f"{total(group, 'revisits_closed')} of {revisits}" if revisits else "-",
-            total(group, "fallbacks"), sum(1 for r in group if r["doubtful"] is True),
+            total(group, "closures_distrusted"), total(group, "fallbacks"),
+            sum(1 for r in group if r["doubtful"] is True),
             fmt(column["seconds"]["mean"], 1)])
     return markdown_table(
         ["log", "noise", "runs", "odometry ATE", "scan matcher ATE", "ATE mean / max (m)",
          "Ceres ATE", "runs > 1.05 x Ceres", f"runs > {TARGET:.2f} m",
          "closures within 2 sigma", "closures correct (precision)", "revisits closed (recall)",
-         "matcher fallbacks", "doubtful verdicts", "s per run"], table)
+         "closures distrusted", "matcher fallbacks", "doubtful verdicts", "s per run"], table)
 
 
 def failures(rows):
