@@ -37,7 +37,8 @@ struct LoopClosureSettings {
   double min_window_angular = 0.1;    ///< radians, smallest heading half-width
   double max_window_angular = 3.14;   ///< radians, largest heading half-width
   std::size_t min_fragment_gap = 3;   ///< b - a >= this for a candidate pair (a, b)
-  std::size_t target_neighbours = 2;  ///< fragments on each side of a that join its target map
+  std::size_t target_neighbours = 3;  ///< fragments on each side of a that join its target map
+                                      ///< (3: leave-one-log-out, docs/generalisation.md)
   double overlap_radius = 3.0;        ///< metres; robot poses this close see the same place
   double min_uncertainty = 0.3;       ///< metres (3 sigma); pairs already known better are skipped
   std::size_t max_attempts = 3;       ///< candidate pairs tried per fragment (nearest first)
