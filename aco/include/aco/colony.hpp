@@ -145,7 +145,11 @@ class Colony {
     const std::size_t ants = settings_.ants;
     for (std::size_t a = 0; a < ants; ++a) rngs_[a] = ant_stream(settings_.seed, iteration_, a);
     if constexpr (kCanFocus) choose_source();
-    family_.prepare(rule_);
+    if constexpr (requires { family_.prepare(rule_, backend_); }) {
+      family_.prepare(rule_, backend_);
+    } else {
+      family_.prepare(rule_);
+    }
 
     const bool improve_all = kHasLocalSearch && (settings_.local_search_ants == 0 ||
                                                  settings_.local_search_ants >= ants);

@@ -8,6 +8,7 @@
 // Once the colony gives it a source tour (set_source), ants change that tour instead of building
 // from nothing: focused construction (focused_construction.hpp).
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -108,11 +109,22 @@ class PermutationFamily {
     return problem_->cost(tour);
   }
 
-  /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix).
-  template <class Rule>
-  void prepare(const Rule&) {
+  /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix), in blocks
+  /// spread over the backend's threads when there is more than one block.
+  template <class Rule, class B>
+  void prepare(const Rule&, B& backend) {
+    constexpr std::size_t kBlock = 1 << 15;
     const auto tau = trail_.values();
-    for (std::size_t e = 0; e < weight_.size(); ++e) refresh(e, tau[e]);
+    const std::size_t blocks = (weight_.size() + kBlock - 1) / kBlock;
+    const auto refresh_block = [&](std::size_t b) {
+      const std::size_t end = std::min(weight_.size(), (b + 1) * kBlock);
+      for (std::size_t e = b * kBlock; e < end; ++e) refresh(e, tau[e]);
+    };
+    if (blocks <= 1) {
+      refresh_block(0);
+    } else {
+      backend.for_each(blocks, refresh_block);
+    }
   }
 
   template <class Rule>
