@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "aco/backend.hpp"
 #include "aco/edge_trail.hpp"
 #include "aco/focused_construction.hpp"
 #include "aco/problem.hpp"
@@ -110,7 +111,12 @@ class PermutationFamily {
   }
 
   /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix), in blocks
-  /// spread over the backend's threads when there is more than one block.
+  /// spread over the backend's threads when there is more than one block (serial without one).
+  template <class Rule>
+  void prepare(const Rule& rule) {
+    SerialBackend serial;
+    prepare(rule, serial);
+  }
   template <class Rule, class B>
   void prepare(const Rule&, B& backend) {
     constexpr std::size_t kBlock = 1 << 15;
