@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "aco/variant.hpp"
 #include "cli/atomic_file.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
@@ -33,6 +34,8 @@ struct TspCommand {
   double cpu_time_s = 0.0;
   double optimum = 0.0;
   bool stop_at_optimum = false;
+  bool quiet = false;  ///< print only "Best <length>" (ACOTSP's --quiet, read by irace's runners)
+  std::size_t tries = 1;  ///< ACOTSP's independent tries; one run per call here
   std::filesystem::path tour_out;
   std::filesystem::path trace_csv;
   std::filesystem::path json_out;
@@ -46,39 +49,10 @@ std::string excess_text(double length, std::optional<double> optimum) {
   return out.str();
 }
 
-void run(const TspCommand& c) {
-  const tsp::SolverSettings settings = solver_settings(c.algorithm);
-  const tsp::TspProblem problem(tsp::read_instance(c.instance), problem_settings(c.algorithm));
+void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
+                   const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
+                   std::optional<double> optimum) {
   const tsp::Instance& instance = problem.instance();
-  const std::optional<double> optimum =
-      c.optimum > 0.0 ? std::optional<double>(c.optimum) : tsp::known_optimum(c.instance);
-
-  aco::Termination termination{
-      .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
-  if (!termination.bounded()) {
-    termination.time_limit_s = 10.0;
-    std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
-  }
-  if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
-
-  Progress progress;
-  std::vector<aco::IterationReport> trace;
-  const auto observer = [&](const aco::IterationReport& r) {
-    if (!c.trace_csv.empty()) trace.push_back(r);
-    if (!progress.enabled()) return;
-    std::ostringstream line;
-    line << instance.name() << "  iteration " << r.iteration << "  best " << r.global_best << ' '
-         << excess_text(r.global_best, optimum) << "  " << std::fixed << std::setprecision(1)
-         << r.elapsed_s << " s";
-    progress.update(line.str());
-  };
-  const aco::RunResult result = tsp::solve(problem, settings, termination, observer);
-  progress.clear();
-
-  const double length = instance.tour_length(result.best.path);
-  if (length != result.best.cost)
-    throw std::logic_error("internal error: the best tour's length does not match its cost");
-
   std::cout << "instance     " << instance.name() << " (" << instance.size() << " cities, "
             << tsp::to_string(instance.type()) << ")\n"
             << "algorithm    " << describe_algorithm(problem, c.algorithm, result.settings)
@@ -92,7 +66,12 @@ void run(const TspCommand& c) {
             << std::fixed << std::setprecision(3) << "time         " << result.elapsed_s
             << " s, best found after " << result.time_to_best_s << " s (iteration "
             << result.best_iteration << ")\n";
+}
 
+void write_outputs(const TspCommand& c, const tsp::TspProblem& problem,
+                   const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
+                   std::optional<double> optimum, const std::vector<aco::IterationReport>& trace) {
+  const tsp::Instance& instance = problem.instance();
   if (!c.tour_out.empty())
     write_atomically(c.tour_out, [&](std::ostream& out) {
       std::ostringstream comment;
@@ -117,6 +96,7 @@ void run(const TspCommand& c) {
                         {"local_search", c.algorithm.local_search},
                         {"neighbours", problem.neighbours(0).size()},
                         {"candidates", problem.candidates(0).size()},
+                        {"focused_edges", result.settings.colony.focused.min_new_edges},
                         {"seed", settings.aco.seed},
                         {"threads", result.settings.threads},
                         {"backend", aco::to_string(result.settings.backend)},
@@ -134,13 +114,64 @@ void run(const TspCommand& c) {
   }
 }
 
+void run(const TspCommand& c) {
+  const tsp::SolverSettings settings = solver_settings(c.algorithm);
+  const tsp::TspProblem problem(tsp::read_instance(c.instance), problem_settings(c.algorithm));
+  const tsp::Instance& instance = problem.instance();
+  const std::optional<double> optimum =
+      c.optimum > 0.0 ? std::optional<double>(c.optimum) : tsp::known_optimum(c.instance);
+
+  aco::Termination termination{
+      .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
+  if (!termination.bounded()) {
+    termination.time_limit_s = 10.0;
+    std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
+  }
+  if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
+
+  Progress progress(!c.quiet && stderr_is_terminal());
+  std::vector<aco::IterationReport> trace;
+  const auto observer = [&](const aco::IterationReport& r) {
+    if (!c.trace_csv.empty()) trace.push_back(r);
+    if (!progress.enabled()) return;
+    std::ostringstream line;
+    line << instance.name() << "  iteration " << r.iteration << "  best " << r.global_best << ' '
+         << excess_text(r.global_best, optimum) << "  " << std::fixed << std::setprecision(1)
+         << r.elapsed_s << " s";
+    progress.update(line.str());
+  };
+  const aco::RunResult result = tsp::solve(problem, settings, termination, observer);
+  progress.clear();
+
+  const double length = instance.tour_length(result.best.path);
+  if (length != result.best.cost)
+    throw std::logic_error("internal error: the best tour's length does not match its cost");
+
+  if (c.quiet) {
+    std::cout << "Best " << std::setprecision(15) << length << '\n';
+  } else {
+    print_summary(c, problem, settings, result, length, optimum);
+  }
+  write_outputs(c, problem, settings, result, length, optimum, trace);
+}
+
 }  // namespace
 
 void add_tsp_command(CLI::App& app) {
   auto command = std::make_shared<TspCommand>();
   CLI::App* sub = app.add_subcommand("tsp", "Solve a TSPLIB instance with an ACO variant");
-  sub->add_option("--instance", command->instance, "TSPLIB .tsp file")->required();
+  sub->add_option("-i,--instance,--tsplibfile", command->instance, "TSPLIB .tsp file")->required();
   add_tsp_options(*sub, command->algorithm, true);
+  for (const aco::VariantInfo& info : aco::kVariants)  // ACOTSP's --as, --eas, ..., --mmas
+    sub->add_flag_callback(
+        "--" + std::string(info.name),
+        [command, name = std::string(info.name)] { command->algorithm.variant = name; },
+        "the same as --variant " + std::string(info.name));
+  sub->add_flag("--quiet", command->quiet,
+                "print one line, 'Best <length>', as ACOTSP's --quiet (for irace's runners)");
+  sub->add_option("--tries", command->tries,
+                  "ACOTSP's independent tries: 1 (one run per call; tsp-experiment repeats runs)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1}));
   sub->add_option("--iterations", command->iterations, "iteration budget (0: none)")
       ->check(non_negative_integer());
   sub->add_option("--time", command->time_s, "wall-clock budget in seconds (0: none)")

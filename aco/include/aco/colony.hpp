@@ -24,6 +24,7 @@
 
 #include "aco/backend.hpp"
 #include "aco/backend_kind.hpp"
+#include "aco/focused_construction.hpp"
 #include "aco/layered_family.hpp"
 #include "aco/local_search.hpp"
 #include "aco/permutation_family.hpp"
@@ -55,6 +56,7 @@ struct ColonySettings {
   double beta = 2.0;       ///< heuristic exponent of eq. (1); no effect without heuristic
   std::uint64_t seed = 1;  ///< seed of every random stream of the run
   std::size_t local_search_ants = 0;  ///< 0: local search improves every ant; k: the k best only
+  FocusedSettings focused{};  ///< ants change a source tour (permutation problems); off by default
 };
 
 /// What the observer hears after every iteration.
@@ -97,6 +99,10 @@ class Colony {
   using Family = typename FamilyOf<Problem>::type;
   using Trail = typename Family::Trail;
   static constexpr bool kHasLocalSearch = !std::is_same_v<LocalSearch, NoLocalSearch>;
+  static constexpr bool kCanFocus = requires(Family & f, std::span<const std::uint32_t> tour) {
+    f.set_source(tour, std::size_t{1});
+  };
+  static constexpr bool kLocalSearchFromCities = LocalSearchFromCities<LocalSearch, Problem>;
 
   Colony(const Problem& problem, const ColonySettings& settings, Rule rule = {}, Update update = {},
          LocalSearch local_search = {}, Exec backend = {})
@@ -108,6 +114,8 @@ class Colony {
         backend_(std::move(backend)),
         family_(problem, settings.alpha, settings.beta) {
     if (settings_.ants == 0) throw std::invalid_argument("colony needs at least one ant");
+    if (settings_.focused.enabled() && !kCanFocus)
+      throw std::invalid_argument("focused construction needs a permutation problem");
     const std::size_t ants = settings_.ants;
     ants_.resize(ants);
     rngs_.resize(ants);
@@ -125,7 +133,10 @@ class Colony {
   void reset() {
     iteration_ = 0;
     best_ = Solution{};
-    update_.initialize(family_.trail(), family_.init_context(settings_.ants, kHasLocalSearch));
+    InitContext context = family_.init_context(settings_.ants, kHasLocalSearch);
+    context.focused = settings_.focused.enabled();
+    if constexpr (kCanFocus) family_.set_source({}, 0);
+    update_.initialize(family_.trail(), context);
   }
 
   /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long local search end early.
@@ -133,7 +144,12 @@ class Colony {
     ++iteration_;
     const std::size_t ants = settings_.ants;
     for (std::size_t a = 0; a < ants; ++a) rngs_[a] = ant_stream(settings_.seed, iteration_, a);
-    family_.prepare(rule_);
+    if constexpr (kCanFocus) choose_source();
+    if constexpr (requires { family_.prepare(rule_, backend_); }) {
+      family_.prepare(rule_, backend_);
+    } else {
+      family_.prepare(rule_);
+    }
 
     const bool improve_all = kHasLocalSearch && (settings_.local_search_ants == 0 ||
                                                  settings_.local_search_ants >= ants);
@@ -237,8 +253,26 @@ class Colony {
 
  private:
   void improve(std::size_t a, const StopToken& stop) {
+    if constexpr (kHasLocalSearch && kCanFocus && kLocalSearchFromCities) {
+      if (family_.focused()) {  // the source is a local optimum: start from the changed cities
+        local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop,
+                              family_.new_edges(a));
+        return;
+      }
+    }
     if constexpr (kHasLocalSearch)
       local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop);
+  }
+
+  /// Focused construction from the second iteration on: the source is the best-so-far tour with
+  /// probability focused.global_best_source, else the previous iteration's best (drawn from the
+  /// stream after the last ant's, so it does not depend on threads).
+  void choose_source() {
+    if (!settings_.focused.enabled() || iteration_ < 2) return;
+    Rng pick = ant_stream(settings_.seed, iteration_, settings_.ants);
+    const bool global = pick.uniform() < settings_.focused.global_best_source;
+    family_.set_source(global ? best_.path : ants_[ranking_.front()].path,
+                       settings_.focused.min_new_edges);
   }
 
   /// Ant indices by increasing cost; ties keep ant order. (std::sort on (cost, index) is the
