@@ -110,6 +110,7 @@ class Colony {
     if (settings_.ants == 0) throw std::invalid_argument("colony needs at least one ant");
     const std::size_t ants = settings_.ants;
     ants_.resize(ants);
+    skipped_.assign(ants, 0);
     rngs_.resize(ants);
     ranking_.resize(ants);
     family_.reserve_ants(ants);
@@ -128,11 +129,16 @@ class Colony {
     update_.initialize(family_.trail(), family_.init_context(settings_.ants, kHasLocalSearch));
   }
 
-  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long local search end early.
+  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long phase end early, so that a
+  /// budget holds inside an iteration: the local search stops improving, a family that polls
+  /// the token (set_stop) finishes the path it builds at once, and ants not begun when it
+  /// expires are not built -- they repeat ant 0's path (ant 0 always runs, so the iteration has
+  /// a best; the run ends after such an iteration).
   IterationReport step(const StopToken& stop = {}) {
     ++iteration_;
     const std::size_t ants = settings_.ants;
     for (std::size_t a = 0; a < ants; ++a) rngs_[a] = ant_stream(settings_.seed, iteration_, a);
+    if constexpr (requires { family_.set_stop(stop); }) family_.set_stop(stop);
     family_.prepare(rule_);
 
     const bool improve_all = kHasLocalSearch && (settings_.local_search_ants == 0 ||
@@ -147,9 +153,13 @@ class Colony {
       backend_.for_each(ants, finish);
     } else {
       backend_.for_each(ants, [&](std::size_t a) {
+        skipped_[a] = a > 0 && stop.expired() ? 1 : 0;
+        if (skipped_[a] != 0) return;
         family_.construct(a, ants_[a].path, rngs_[a], rule_);
         finish(a);
       });
+      for (std::size_t a = 1; a < ants; ++a)
+        if (skipped_[a] != 0) ants_[a] = ants_[0];
     }
     if (kHasLocalSearch && !improve_all) {
       rank();
@@ -179,10 +189,12 @@ class Colony {
     if (!termination.bounded())
       throw std::invalid_argument(
           "termination: set iterations, a time budget, a target or stagnation");
-    reset();
+    // The budget counts from here: initialising the trails (a nearest-neighbour tour of a
+    // million cities takes seconds) is part of the run.
     using Clock = StopToken::Clock;
-    const auto start = Clock::now();
+    const auto start = termination.start != Clock::time_point{} ? termination.start : Clock::now();
     const double cpu_start = StopToken::cpu_seconds();
+    reset();
     const StopToken stop(termination.time_limit_s > 0.0
                              ? start + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(termination.time_limit_s))
@@ -258,6 +270,7 @@ class Colony {
   Exec backend_;
   Family family_;
   std::vector<Solution> ants_;
+  std::vector<std::uint8_t> skipped_;  ///< per ant: not built this iteration (stop expired)
   std::vector<Rng> rngs_;
   std::vector<std::uint32_t> ranking_;
   std::vector<typename LocalSearch::Workspace> workspaces_;
