@@ -13,12 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/alignment.hpp"
 #include "eval/relations.hpp"
 #include "eval/report.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -59,26 +62,31 @@ slam::Trajectory read_trajectory(const std::filesystem::path& path) {
 void run_eval(EvalOptions options) {
   options.settings.align = !options.no_align;
   if (options.rpe_distance) options.settings.rpe.metres = *options.rpe_distance;
+  OutputFiles outputs;
+  if (!options.aligned.empty()) outputs.add(options.aligned);
+  if (!options.json.empty()) outputs.add(options.json);
   const slam::Trajectory estimate = read_trajectory(options.estimate);
   const slam::Trajectory reference = read_trajectory(options.reference);
   std::vector<eval::Relation> relations;
   if (!options.relations.empty()) relations = eval::read_relations_file(options.relations);
 
-  const eval::Evaluation evaluation =
-      eval::evaluate(estimate, reference, options.settings, relations);
+  const eval::Evaluation evaluation = in_context_of(
+      {options.estimate, options.reference, options.relations},
+      [&] { return eval::evaluate(estimate, reference, options.settings, relations); });
 
-  eval::print_table(std::cout, evaluation);
   if (!options.aligned.empty()) {
     const slam::Trajectory aligned = eval::transformed(estimate, evaluation.ate.alignment);
-    write_atomically(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
+    outputs.write(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
   }
   if (!options.json.empty()) {
     nlohmann::json json = eval::to_json(evaluation);
     json["estimate"] = options.estimate.string();
     json["reference"] = options.reference.string();
     if (!options.relations.empty()) json["relations"]["file"] = options.relations.string();
-    write_atomically(options.json, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
+    outputs.write(options.json, json_text(json));
   }
+  outputs.commit();
+  eval::print_table(std::cout, evaluation);
 }
 
 }  // namespace
@@ -98,7 +106,7 @@ void add_eval_command(CLI::App& app) {
   auto* frames =
       cmd->add_option("--rpe-frames", options->settings.rpe.frames, "RPE step in associated poses")
           ->capture_default_str()
-          ->check(CLI::PositiveNumber);
+          ->check(count_in(1, 1'000'000'000));
   cmd->add_option("--rpe-distance", options->rpe_distance,
                   "RPE step as distance travelled along the reference, metres")
       ->check(finite_number(false))
