@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/alignment.hpp"
 #include "eval/fragment_set_check.hpp"
@@ -22,6 +24,7 @@
 #include "eval/report.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -63,32 +66,28 @@ slam::Trajectory read_trajectory(const std::filesystem::path& path) {
 void run_eval(EvalOptions options) {
   options.settings.align = !options.no_align;
   if (options.rpe_distance) options.settings.rpe.metres = *options.rpe_distance;
+  OutputFiles outputs;
+  if (!options.aligned.empty()) outputs.add(options.aligned);
+  if (!options.json.empty()) outputs.add(options.json);
   const slam::Trajectory estimate = read_trajectory(options.estimate);
   const slam::Trajectory reference = read_trajectory(options.reference);
   std::vector<eval::Relation> relations;
   if (!options.relations.empty()) relations = eval::read_relations_file(options.relations);
 
-  const eval::Evaluation evaluation =
-      eval::evaluate(estimate, reference, options.settings, relations);
+  const eval::Evaluation evaluation = in_context_of(
+      {options.estimate, options.reference, options.relations},
+      [&] { return eval::evaluate(estimate, reference, options.settings, relations); });
 
-  eval::print_table(std::cout, evaluation);
   std::optional<eval::FragmentSetCheck> check;
   if (!options.fragment_set.empty()) {
     eval::FragmentSetCheckSettings settings;
     settings.max_dt = options.settings.max_dt;
     check = eval::check_fragment_set(slam::read_fragment_set_file(options.fragment_set), reference,
                                      settings);
-    const auto percent = [](const std::optional<double>& v) {
-      return v ? std::to_string(static_cast<int>(std::lround(100.0 * *v))) + " %" : "-";
-    };
-    std::cout << "loop closures: " << check->correct_closures << " of " << check->checked_closures
-              << " correct (precision " << percent(check->precision()) << "), "
-              << check->revisits_closed << " of " << check->revisits
-              << " revisiting fragments closed (recall " << percent(check->recall()) << ")\n";
   }
   if (!options.aligned.empty()) {
     const slam::Trajectory aligned = eval::transformed(estimate, evaluation.ate.alignment);
-    write_atomically(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
+    outputs.write(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
   }
   if (!options.json.empty()) {
     nlohmann::json json = eval::to_json(evaluation);
@@ -99,7 +98,18 @@ void run_eval(EvalOptions options) {
       json["fragment_set"] = eval::to_json(*check);
       json["fragment_set"]["file"] = options.fragment_set.string();
     }
-    write_atomically(options.json, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
+    outputs.write(options.json, json_text(json));
+  }
+  outputs.commit();
+  eval::print_table(std::cout, evaluation);
+  if (check) {
+    const auto percent = [](const std::optional<double>& v) {
+      return v ? std::to_string(static_cast<int>(std::lround(100.0 * *v))) + " %" : "-";
+    };
+    std::cout << "loop closures: " << check->correct_closures << " of " << check->checked_closures
+              << " correct (precision " << percent(check->precision()) << "), "
+              << check->revisits_closed << " of " << check->revisits
+              << " revisiting fragments closed (recall " << percent(check->recall()) << ")\n";
   }
 }
 
@@ -120,7 +130,7 @@ void add_eval_command(CLI::App& app) {
   auto* frames =
       cmd->add_option("--rpe-frames", options->settings.rpe.frames, "RPE step in associated poses")
           ->capture_default_str()
-          ->check(CLI::PositiveNumber);
+          ->check(count_in(1, 1'000'000'000));
   cmd->add_option("--rpe-distance", options->rpe_distance,
                   "RPE step as distance travelled along the reference, metres")
       ->check(finite_number(false))

@@ -13,7 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/image.hpp"
@@ -98,40 +100,47 @@ void run(MapOptions o) {
   s.frontend.fragmentation.seed = s.mapping.optimize.seed;
   s.map = o.frontend.map;
   s.draw_maps = !o.no_maps;
+  mapping::validate(s);
+
+  // Every output is declared (and checked) now; maps this run does not draw are removed from
+  // --out when the outputs are moved into place, so that the directory holds one run.
+  OutputFiles outputs;
+  const std::filesystem::path set_path = outputs.add(o.out / "fragment-set.json");
+  const std::filesystem::path trajectory = outputs.add(o.out / "trajectory.tum");
+  const std::filesystem::path scan_matcher = outputs.add(o.out / "trajectory-scan-matcher.tum");
+  const std::vector<std::filesystem::path> maps = {outputs.add(o.out / "map-scan-matcher.png"),
+                                                   outputs.add(o.out / "map-optimized.png"),
+                                                   outputs.add(o.out / "map-average.png")};
+  const std::filesystem::path report = outputs.add(o.out / "report.json");
 
   Progress progress;
-  const mapping::PipelineResult r = mapping::run_pipeline(
-      o.log, s, o.reference,
-      [&](std::string_view stage, bool final) { progress.update(std::string(stage), final); });
+  const mapping::PipelineResult r = in_context_of({o.log, o.reference}, [&] {
+    return mapping::run_pipeline(o.log, s, o.reference, [&](std::string_view stage, bool final) {
+      progress.update(std::string(stage), final);
+    });
+  });
   progress.clear();
 
-  const std::filesystem::path set_path = o.out / "fragment-set.json";
-  const std::filesystem::path trajectory = o.out / "trajectory.tum";
-  const std::filesystem::path scan_matcher = o.out / "trajectory-scan-matcher.tum";
-  const std::filesystem::path report = o.out / "report.json";
-  write_atomically(
-      set_path, [&](std::ostream& out) { slam::write_fragment_set(out, r.frontend.fragment_set); });
-  write_atomically(trajectory,
-                   [&](std::ostream& out) { slam::write_tum(out, r.mapping.corrected); });
-  write_atomically(scan_matcher,
-                   [&](std::ostream& out) { slam::write_tum(out, r.frontend.trajectory); });
-  write_atomically(report, [&](std::ostream& out) {
-    out << mapping::report_json(o.log.string(), s, r).dump(2) << '\n';
-  });
   // The maps last: the trajectory, fragment set and report are there whatever happens to them.
-  std::vector<std::filesystem::path> maps;
+  outputs.write(set_path,
+                [&](std::ostream& out) { slam::write_fragment_set(out, r.frontend.fragment_set); });
+  outputs.write(trajectory, [&](std::ostream& out) { slam::write_tum(out, r.mapping.corrected); });
+  outputs.write(scan_matcher,
+                [&](std::ostream& out) { slam::write_tum(out, r.frontend.trajectory); });
+  outputs.write(report, json_text(mapping::report_json(o.log.string(), s, r)));
   if (r.maps) {
-    maps = {o.out / "map-scan-matcher.png", o.out / "map-optimized.png", o.out / "map-average.png"};
-    write_atomically(maps[0], frontend::encode_png(r.maps->scan_matcher));
-    write_atomically(maps[1], frontend::encode_png(r.maps->optimized));
-    write_atomically(maps[2], frontend::encode_png(r.maps->average));
+    outputs.write(maps[0], frontend::encode_png(r.maps->scan_matcher));
+    outputs.write(maps[1], frontend::encode_png(r.maps->optimized));
+    outputs.write(maps[2], frontend::encode_png(r.maps->average));
   }
+  outputs.commit();
 
   print_summary(o, r);
   std::printf("wrote %s, %s, %s, %s\n", set_path.string().c_str(), trajectory.string().c_str(),
               scan_matcher.string().c_str(), report.string().c_str());
-  for (const std::filesystem::path& p : maps)
-    std::printf("map: %s (%.3f m per pixel)\n", p.string().c_str(), r.maps->resolution);
+  if (r.maps)
+    for (const std::filesystem::path& p : maps)
+      std::printf("map: %s (%.3f m per pixel)\n", p.string().c_str(), r.maps->resolution);
   std::printf("%s\n", r.verdict.line.c_str());
 }
 
@@ -150,11 +159,11 @@ void add_map_command(CLI::App& app) {
   sub->add_option("--out", o.out, "output directory")->required();
   sub->add_option("--trials", o.mapping.trials,
                   "optimizer trials; the lowest weight is the map, all of them the average map")
-      ->check(non_negative_integer())
+      ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
   sub->add_option("--threads", o.mapping.threads,
                   "threads the trials run on (0 = all cores); results do not depend on it")
-      ->check(non_negative_integer())
+      ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   sub->add_option("--reference", o.reference,
                   "reference trajectory (TUM) to evaluate both trajectories against");

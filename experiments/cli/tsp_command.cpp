@@ -1,6 +1,7 @@
 // antslam tsp: solve one TSPLIB instance, print a summary, optionally write the best tour, a
 // per-iteration trace (CSV) and a JSON summary.
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,10 +12,13 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "aco/variant.hpp"
-#include "cli/atomic_file.hpp"
+#include "cli/json_output.hpp"
+#include "cli/memory.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "tsp/optima.hpp"
@@ -51,7 +55,7 @@ std::string excess_text(double length, std::optional<double> optimum) {
 
 void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
                    const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
-                   std::optional<double> optimum) {
+                   std::optional<double> optimum, double setup_s) {
   const tsp::Instance& instance = problem.instance();
   std::cout << "instance     " << instance.name() << " (" << instance.size() << " cities, "
             << tsp::to_string(instance.type()) << ")\n"
@@ -65,22 +69,23 @@ void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
             << " (stopped: " << aco::to_string(result.reason) << ")\n"
             << std::fixed << std::setprecision(3) << "time         " << result.elapsed_s
             << " s, best found after " << result.time_to_best_s << " s (iteration "
-            << result.best_iteration << ")\n";
+            << result.best_iteration << ")\n"
+            << "setup        " << setup_s << " s of it reading the instance, candidate lists\n";
 }
 
-void write_outputs(const TspCommand& c, const tsp::TspProblem& problem,
+void write_outputs(const TspCommand& c, OutputFiles& outputs, const tsp::TspProblem& problem,
                    const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
                    std::optional<double> optimum, const std::vector<aco::IterationReport>& trace) {
   const tsp::Instance& instance = problem.instance();
   if (!c.tour_out.empty())
-    write_atomically(c.tour_out, [&](std::ostream& out) {
+    outputs.write(c.tour_out, [&](std::ostream& out) {
       std::ostringstream comment;
       comment << "length " << std::setprecision(15) << length << ", antslam tsp "
               << c.algorithm.variant << " seed " << settings.aco.seed;
       tsp::write_tour(out, instance.name() + ".tour", result.best.path, comment.str());
     });
   if (!c.trace_csv.empty())
-    write_atomically(c.trace_csv, [&](std::ostream& out) {
+    outputs.write(c.trace_csv, [&](std::ostream& out) {
       out << "iteration,elapsed_s,iteration_best,global_best\n" << std::setprecision(15);
       for (const aco::IterationReport& r : trace)
         out << r.iteration << ',' << r.elapsed_s << ',' << r.iteration_best << ',' << r.global_best
@@ -110,22 +115,40 @@ void write_outputs(const TspCommand& c, const tsp::TspProblem& problem,
       j["optimum"] = *optimum;
       j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
     }
-    write_atomically(c.json_out, j.dump(2) + "\n");
+    outputs.write(c.json_out, json_text(j));
   }
+  outputs.commit();
 }
 
 void run(const TspCommand& c) {
   const tsp::SolverSettings settings = solver_settings(c.algorithm);
-  const tsp::TspProblem problem(tsp::read_instance(c.instance), problem_settings(c.algorithm));
+  OutputFiles outputs;
+  if (!c.tour_out.empty()) outputs.add(c.tour_out);
+  if (!c.trace_csv.empty()) outputs.add(c.trace_csv);
+  if (!c.json_out.empty()) outputs.add(c.json_out);
+  const auto setup_start = std::chrono::steady_clock::now();
+  tsp::Instance read = tsp::read_instance(c.instance);
+  const auto n = static_cast<double>(read.size());
+  if (read.size() <= c.algorithm.problem.matrix_limit)
+    require_memory("--matrix-limit " + std::to_string(c.algorithm.problem.matrix_limit) +
+                       " (the distance matrix)",
+                   4.0 * n * n);
+  const tsp::TspProblem problem(std::move(read), problem_settings(c.algorithm));
+  const double setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
   const tsp::Instance& instance = problem.instance();
   const std::optional<double> optimum =
       c.optimum > 0.0 ? std::optional<double>(c.optimum) : tsp::known_optimum(c.instance);
 
-  aco::Termination termination{
-      .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
+  // --time covers the whole solve: reading the instance and building the colony count.
+  aco::Termination termination{.max_iterations = c.iterations,
+                               .time_limit_s = c.time_s,
+                               .cpu_time_limit_s = c.cpu_time_s,
+                               .start = setup_start};
   if (!termination.bounded()) {
     termination.time_limit_s = 10.0;
-    std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
+    if (!c.quiet)
+      std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
   }
   if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
 
@@ -150,9 +173,9 @@ void run(const TspCommand& c) {
   if (c.quiet) {
     std::cout << "Best " << std::setprecision(15) << length << '\n';
   } else {
-    print_summary(c, problem, settings, result, length, optimum);
+    print_summary(c, problem, settings, result, length, optimum, setup_s);
   }
-  write_outputs(c, problem, settings, result, length, optimum, trace);
+  write_outputs(c, outputs, problem, settings, result, length, optimum, trace);
 }
 
 }  // namespace

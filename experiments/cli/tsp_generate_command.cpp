@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "cli/atomic_file.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "tsp/generator.hpp"
 #include "tsp/tsplib.hpp"
@@ -32,7 +32,7 @@ void add_tsp_generate_command(CLI::App& app) {
       "Write a random instance in [0, side]^2, EUC_2D: uniform or clustered (DIMACS portgen / "
       "portcgen)");
   sub->add_option("--cities", c->cities, "number of cities")
-      ->check(CLI::Range(std::size_t{3}, std::size_t{10'000'000}))
+      ->check(count_in(3, 10'000'000))
       ->capture_default_str();
   sub->add_option("--seed", c->seed, "seed of the coordinates")
       ->check(non_negative_integer())
@@ -53,11 +53,14 @@ void add_tsp_generate_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--out", c->out, "TSPLIB file to write")->required();
   sub->callback([c] {
+    OutputFiles outputs;
+    outputs.add(c->out);
     const tsp::Instance instance =
         c->kind == "clustered"
             ? tsp::random_clustered_instance(c->cities, c->seed, c->side, c->clusters)
             : tsp::random_uniform_instance(c->cities, c->seed, c->side);
-    write_atomically(c->out, [&](std::ostream& out) { tsp::write_instance(out, instance); });
+    outputs.write(c->out, [&](std::ostream& out) { tsp::write_instance(out, instance); });
+    outputs.commit();
     std::cout << "wrote " << c->out.string() << " (" << instance.name() << ", " << instance.size()
               << " cities)\n";
   });

@@ -36,7 +36,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command
       .add_option("--neighbours,--nnls", o.problem.ls_neighbours,
                   "nearest neighbours the local search tries per city")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
+      ->check(count_in(1, 1000))
       ->capture_default_str();
   command
       .add_option("--ls-start", o.ls_start,
@@ -47,27 +47,27 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command
       .add_option("--candidates,--nnants", o.problem.candidates,
                   "nearest neighbours an ant chooses among (candidate list)")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
+      ->check(count_in(1, 1000))
       ->capture_default_str();
   command
       .add_option("--ls-ants", p.local_search_ants,
                   "apply local search to this many best ants only (0: every ant)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}))
+      ->check(count_in(0, 1'000'000))
       ->capture_default_str();
   command
       .add_option("--matrix-limit", o.problem.matrix_limit,
-                  "store the full distance matrix up to this many cities")
-      ->check(non_negative_integer())
+                  "store the full distance matrix (4 n^2 bytes) up to this many cities")
+      ->check(count_in(0, 1'000'000))
       ->capture_default_str();
   command.add_option("--ants", p.ants, "ants per iteration (0: variant default)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}))
+      ->check(count_in(0, 1'000'000))
       ->capture_default_str();
   if (single_run) {
     command.add_option("--seed", p.seed, "seed of every random choice")
         ->check(non_negative_integer())
         ->capture_default_str();
     command.add_option("--threads", o.threads, "threads building ants")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
+        ->check(count_in(1, 1024))
         ->capture_default_str();
   }
   add_backend_option(command, o.backend);
@@ -91,7 +91,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
                   "focused construction: ants change the source tour and copy it after adding "
                   "this many edges of their own (0: build every tour from nothing; default: 8 "
                   "for mmas, 0 for the other variants)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}));
+      ->check(count_in(0, 1'000'000));
   command
       .add_option("--source-global-best", p.focused.global_best_source,
                   "focused construction: probability that the source is the best-so-far tour "
@@ -104,7 +104,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
       ->check(finite_in(0.0, kBig))
       ->capture_default_str();
   command.add_option("--rank-width,--rasranks", p.rank_width, "RAS: ranked ants w")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
+      ->check(count_in(2, 100000))
       ->capture_default_str();
   command.add_option("--p-best", p.p_best, "MMAS: p_best setting tau_min")
       ->check(finite_in(1e-12, 1.0 - 1e-12))
@@ -117,7 +117,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command
       .add_option("--glob-best-freq", p.glob_best_freq,
                   "hybrid: every this-th iteration only the two best ants deposit")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}))
+      ->check(count_in(1, 1000000))
       ->capture_default_str();
   command.add_option("--tau-max", p.tau_max, "hybrid: pheromone cap")
       ->check(finite_in(1e-300, kBig))

@@ -46,6 +46,14 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
   return results;
 }
 
+double trial_result_bytes(const FragmentSet& set) {
+  constexpr double kConvergencePoints = 64;  // improvements recorded per trial, typically
+  const auto n = static_cast<double>(set.fragments.size());
+  return static_cast<double>(sizeof(OptimizeResult)) +
+         n * (2.0 * sizeof(Pose2) + sizeof(std::uint32_t)) +
+         kConvergencePoints * sizeof(ConvergencePoint);
+}
+
 std::size_t best_trial(std::span<const OptimizeResult> trials) {
   if (trials.empty()) throw std::invalid_argument("best_trial: no trials");
   std::size_t best = 0;

@@ -102,7 +102,9 @@ void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_
                                                                       : &detail::three_opt_step;
   std::uint32_t head = 0;
   detail::Touched touched;
-  while (count > 0) {
+  // The stop token is polled every 64 cities and every 16 moves: on a poor tour of a million
+  // cities one city can take many moves, each reversing up to n / 2 cities.
+  while (count > 0 && !w.stats.stopped) {
     if ((++w.stats.examined & 63U) == 0 && stop.expired()) {
       w.stats.stopped = true;
       break;
@@ -112,7 +114,10 @@ void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_
     --count;
     w.queued[city] = 0;
     while (step(problem, w.tour, city, k, touched)) {
-      ++w.stats.moves;
+      if ((++w.stats.moves & 15U) == 0 && stop.expired()) {
+        w.stats.stopped = true;
+        break;
+      }
       for (std::size_t t = 0; t < touched.count; ++t) {
         const std::uint32_t c = touched.cities[t];
         if (w.queued[c] || c == city) continue;

@@ -118,6 +118,7 @@ class Colony {
       throw std::invalid_argument("focused construction needs a permutation problem");
     const std::size_t ants = settings_.ants;
     ants_.resize(ants);
+    skipped_.assign(ants, 0);
     rngs_.resize(ants);
     ranking_.resize(ants);
     family_.reserve_ants(ants);
@@ -139,12 +140,17 @@ class Colony {
     update_.initialize(family_.trail(), context);
   }
 
-  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long local search end early.
+  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long phase end early, so that a
+  /// budget holds inside an iteration: the local search stops improving, a family that polls
+  /// the token (set_stop) finishes the path it builds at once, and ants not begun when it
+  /// expires are not built -- they repeat ant 0's path (ant 0 always runs, so the iteration has
+  /// a best; the run ends after such an iteration).
   IterationReport step(const StopToken& stop = {}) {
     ++iteration_;
     const std::size_t ants = settings_.ants;
     for (std::size_t a = 0; a < ants; ++a) rngs_[a] = ant_stream(settings_.seed, iteration_, a);
     if constexpr (kCanFocus) choose_source();
+    if constexpr (requires { family_.set_stop(stop); }) family_.set_stop(stop);
     if constexpr (requires { family_.prepare(rule_, backend_); }) {
       family_.prepare(rule_, backend_);
     } else {
@@ -163,9 +169,13 @@ class Colony {
       backend_.for_each(ants, finish);
     } else {
       backend_.for_each(ants, [&](std::size_t a) {
+        skipped_[a] = a > 0 && stop.expired() ? 1 : 0;
+        if (skipped_[a] != 0) return;
         family_.construct(a, ants_[a].path, rngs_[a], rule_);
         finish(a);
       });
+      for (std::size_t a = 1; a < ants; ++a)
+        if (skipped_[a] != 0) ants_[a] = ants_[0];
     }
     if (kHasLocalSearch && !improve_all) {
       rank();
@@ -195,10 +205,12 @@ class Colony {
     if (!termination.bounded())
       throw std::invalid_argument(
           "termination: set iterations, a time budget, a target or stagnation");
-    reset();
+    // The budget counts from here: initialising the trails (a nearest-neighbour tour of a
+    // million cities takes seconds) is part of the run.
     using Clock = StopToken::Clock;
-    const auto start = Clock::now();
+    const auto start = termination.start != Clock::time_point{} ? termination.start : Clock::now();
     const double cpu_start = StopToken::cpu_seconds();
+    reset();
     const StopToken stop(termination.time_limit_s > 0.0
                              ? start + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(termination.time_limit_s))
@@ -292,6 +304,7 @@ class Colony {
   Exec backend_;
   Family family_;
   std::vector<Solution> ants_;
+  std::vector<std::uint8_t> skipped_;  ///< per ant: not built this iteration (stop expired)
   std::vector<Rng> rngs_;
   std::vector<std::uint32_t> ranking_;
   std::vector<typename LocalSearch::Workspace> workspaces_;

@@ -6,7 +6,10 @@
 // tour costs O(n k) plus the fallbacks, each an O(n) scan -- or, for problems that offer one
 // (PermutationProblemWithNearestSearch), an exact search that is about O(1) per fallback.
 // Once the colony gives it a source tour (set_source), ants change that tour instead of building
-// from nothing: focused construction (focused_construction.hpp).
+// from nothing: focused construction (focused_construction.hpp). Once the run's stop token
+// expires (set_stop), a tour under construction is finished by appending its unvisited nodes in
+// index order, O(n): on a million nodes one ant takes seconds, and a budget must hold inside an
+// iteration.
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +26,7 @@
 #include "aco/focused_construction.hpp"
 #include "aco/problem.hpp"
 #include "aco/random.hpp"
+#include "aco/termination.hpp"
 #include "aco/update_context.hpp"
 
 namespace antslam::aco {
@@ -133,6 +137,9 @@ class PermutationFamily {
     }
   }
 
+  /// The token construct() and construct_synchronous() poll (every kStopPoll steps).
+  void set_stop(const StopToken& stop) { stop_ = stop; }
+
   template <class Rule>
   void construct(std::size_t ant, std::vector<std::uint32_t>& tour, Rng& rng, const Rule& rule) {
     Scratch& s = scratch_[ant];
@@ -147,8 +154,13 @@ class PermutationFamily {
           [&](std::uint32_t city) { return s.visited[city] != 0; }, s.new_edges);
     } else {
       std::uint32_t* t = begin(s, tour, start);
-      for (std::uint32_t step = 1; step < n_; ++step)
+      for (std::uint32_t step = 1; step < n_; ++step) {
+        if (step % kStopPoll == 0 && stop_.expired()) {
+          complete(s, t);
+          break;
+        }
         visit(s, t, choose_next(s, t[step - 1], local, rule));
+      }
     }
     rng = local;
   }
@@ -180,6 +192,10 @@ class PermutationFamily {
     for (std::size_t a = 0; a < ants.size(); ++a)
       begin(scratch_[a], ants[a].path, rngs[a].below(n_));
     for (std::uint32_t step = 1; step < n_; ++step) {
+      if (step % kStopPoll == 0 && stop_.expired()) {
+        for (std::size_t a = 0; a < ants.size(); ++a) complete(scratch_[a], ants[a].path.data());
+        return;
+      }
       backend.for_each(ants.size(), [&](std::size_t a) {
         std::uint32_t* t = ants[a].path.data();
         visit(scratch_[a], t, choose_next(scratch_[a], t[step - 1], rngs[a], rule));
@@ -191,6 +207,7 @@ class PermutationFamily {
 
  private:
   static constexpr std::uint32_t kNone = EdgeTrail::kNone;
+  static constexpr std::uint32_t kStopPoll = 1024;  ///< steps between looks at the stop token
   static constexpr bool kHasNearestSearch = PermutationProblemWithNearestSearch<P>;
   using NearestSearch = typename detail::NearestSearchOf<P>::type;
 
@@ -268,6 +285,12 @@ class PermutationFamily {
     }
   }
 
+  /// Appends the unvisited nodes in index order: a valid tour at once when time is up.
+  void complete(Scratch& s, std::uint32_t* tour) const {
+    for (std::uint32_t i = 0; i < n_ && s.length < n_; ++i)
+      if (s.visited[i] == 0) visit(s, tour, i);
+  }
+
   template <class Rule>
   std::uint32_t choose_next(Scratch& s, std::uint32_t current, Rng& rng, const Rule& rule) const {
     const std::uint32_t* list = trail_.neighbours(current).data();
@@ -314,6 +337,7 @@ class PermutationFamily {
   std::vector<double> eta_beta_;
   std::vector<double> weight_;
   std::vector<Scratch> scratch_;
+  StopToken stop_;  ///< never expires unless set_stop() says otherwise
 };
 
 }  // namespace antslam::aco
