@@ -1,4 +1,4 @@
-// AntSLAM speed (issue item 11): the paper's configuration (20 ants, 3000 iterations, M = 20)
+// AntSLAM speed: the paper's configuration (20 ants, 3000 iterations, M = 20)
 // on the synthetic presets N = 9, 15, 24, single-threaded; the cost of one eq. (10) evaluation;
 // and 100 independent trials on 1 and 2 threads. The paper reports 0.9 s (N = 9) and 1.6 s
 // (N = 15) on a 2.2 GHz AMD; the target is 100x that, single-threaded.

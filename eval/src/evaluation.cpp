@@ -2,6 +2,7 @@
 
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "eval/alignment.hpp"
@@ -43,6 +44,12 @@ Evaluation evaluate(const slam::Trajectory& estimate, const slam::Trajectory& re
   if (!relations.empty())
     result.relations = relations_error(estimate, relations, settings.relations_max_dt);
   return result;
+}
+
+slam::TrajectoryError frames_error(std::span<const slam::Pose2> frames,
+                                   std::span<const slam::Pose2> reference) {
+  const AteResult e = indexed_ate(frames, reference);
+  return {e.translation_m.rmse, e.translation_m.max, e.rotation_deg.rmse, frames.size()};
 }
 
 }  // namespace antslam::eval

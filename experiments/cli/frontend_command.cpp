@@ -5,24 +5,25 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "aco/random.hpp"
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/image.hpp"
 #include "frontend/laser_log.hpp"
 #include "frontend/map_render.hpp"
+#include "frontend/report.hpp"
 #include "frontend_options.hpp"
-#include "frontend_report.hpp"
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -30,6 +31,9 @@ namespace {
 
 using nlohmann::json;
 namespace fe = antslam::frontend;
+
+/// Random sample sequences --average-samples may draw: each one renders every scan again.
+constexpr std::uint64_t kMaxAverageSamples = 10000;
 
 struct FrontendCommandOptions {
   std::filesystem::path log;
@@ -42,55 +46,44 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// The average map over `count` random sample sequences (one sample of eq. (7) per fragment,
-/// placed by eq. (8)): the spread of maps the optimizer chooses from, drawn like Fig. 5b.
-fe::Image sample_average(const fe::LaserLog& log, const fe::FrontendResult& r, std::size_t count,
-                         std::uint64_t seed, const fe::MapRenderSettings& settings) {
-  const slam::FragmentSet& set = r.fragment_set;
-  const std::size_t samples = set.fragments.size() > 1 ? set.fragments[1].samples.size() : 0;
-  std::vector<std::vector<slam::Pose2>> trials;
-  aco::Rng rng(aco::mix_seed(seed, 0xA7E5));
-  for (std::size_t t = 0; t < count; ++t) {
-    std::vector<std::uint32_t> choice(set.layer_count());
-    for (std::uint32_t& c : choice) c = rng.below(static_cast<std::uint32_t>(samples));
-    trials.push_back(slam::world_frames(set, choice));
-  }
-  return fe::render_average_map(log, fe::map_layout(r), trials, settings);
-}
-
 void run(FrontendCommandOptions c) {
   const auto start = std::chrono::steady_clock::now();
   FrontendOptions& o = c.frontend;
   resolve(o);
   fe::validate(o.map);
   fe::validate(o.settings);
+  OutputFiles outputs;
+  const std::filesystem::path trajectory = outputs.add(c.out / "trajectory.tum");
+  const std::filesystem::path map_path = outputs.add(c.out / "map.png");
+  const std::filesystem::path samples_path = outputs.add(c.out / "map-samples.png");
+  const std::filesystem::path report_path = outputs.add(c.out / "report.json");
 
-  const fe::LaserLog log = fe::read_carmen_file(c.log, o.sensor.overrides());
+  const fe::LaserLog log = read_laser_log(c.log, o.sensor);
+  fe::require_time_order(log);
   const double read_seconds = seconds_since(start);
   Progress progress;
   const auto matching = std::chrono::steady_clock::now();
   const fe::FrontendResult result =
-      run_frontend(log, o.settings, c.log.filename().string(), progress);
+      in_context_of(c.log, [&] { return run_frontend(log, o.settings, progress); });
   const double frontend_seconds = seconds_since(matching);
   progress.update("frontend: drawing the map", true);
 
   const auto drawing = std::chrono::steady_clock::now();
-  const fe::Image map =
-      fe::render_map(log, fe::map_layout(result), fe::scan_matcher_frames(result), o.map);
-  const std::string png = fe::encode_png(map);
-  std::string average_png;
+  const fe::Image map = in_context_of(c.log, [&] {
+    return fe::render_map(log, fe::map_layout(result), fe::scan_matcher_frames(result), o.map);
+  });
+  outputs.write(map_path, fe::encode_png(map));
   if (c.average_samples > 0 && result.fragments.size() > 1) {
     progress.update("frontend: averaging maps of random sample sequences", true);
-    average_png = fe::encode_png(
-        sample_average(log, result, c.average_samples, o.settings.fragmentation.seed, o.map));
+    outputs.write(samples_path, fe::encode_png(in_context_of(c.log, [&] {
+                    return fe::render_sample_average_map(log, result, c.average_samples,
+                                                         o.settings.fragmentation.seed, o.map);
+                  })));
   }
   const double map_seconds = seconds_since(drawing);
   progress.clear();
 
-  write_atomically(c.out / "trajectory.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
-  write_atomically(c.out / "map.png", png);
-  if (!average_png.empty()) write_atomically(c.out / "map-samples.png", average_png);
+  outputs.write(trajectory, [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
   const json times = {
       {"read_s", read_seconds},
       {"scan_matching_s", result.stats.matching_seconds},
@@ -99,11 +92,11 @@ void run(FrontendCommandOptions c) {
       {"scans_per_second", static_cast<double>(log.scans.size()) / frontend_seconds},
       {"map_s", map_seconds},
       {"total_s", seconds_since(start)}};
-  nlohmann::json report = frontend_input_json(c.log.string(), log, o);
-  report.update(frontend_result_json(result));
+  nlohmann::json report = fe::input_json(c.log.string(), log, o.settings, o.map);
+  report.update(fe::result_json(result));
   report["times"] = times;
-  write_atomically(c.out / "report.json",
-                   [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  outputs.write(report_path, json_text(report));
+  outputs.commit();
 
   std::printf(
       "%s: %zu scans in %.2f s (%.0f scans/s), %zu fragments, %zu loop closures (%zu "
@@ -111,9 +104,8 @@ void run(FrontendCommandOptions c) {
       c.log.string().c_str(), log.scans.size(), frontend_seconds,
       static_cast<double>(log.scans.size()) / frontend_seconds, result.fragments.size(),
       result.fragment_set.closures.size(), result.attempts.size());
-  std::printf("wrote %s, %s (%zu x %zu), %s\n", (c.out / "trajectory.tum").string().c_str(),
-              (c.out / "map.png").string().c_str(), map.width(), map.height(),
-              (c.out / "report.json").string().c_str());
+  std::printf("wrote %s, %s (%zu x %zu), %s\n", trajectory.string().c_str(),
+              map_path.string().c_str(), map.width(), map.height(), report_path.string().c_str());
 }
 
 }  // namespace
@@ -128,12 +120,14 @@ void add_frontend_command(CLI::App& app) {
   sub->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
   sub->add_option("--out", o.out, "output directory")->required();
   sub->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
+      ->check(non_negative_integer())
       ->capture_default_str();
   add_frontend_options(*sub, o.frontend);
   add_map_options(*sub, o.frontend);
   sub->add_option("--average-samples", o.average_samples,
                   "also write map-samples.png: the average map of this many random sample "
-                  "sequences (eqs. 7-8)");
+                  "sequences (eqs. 7-8)")
+      ->check(count_in(0, kMaxAverageSamples));
   sub->callback([options] { run(*options); });
 }
 

@@ -32,9 +32,9 @@ void add_map_options(CLI::App& command, FrontendOptions& options);
 void resolve(FrontendOptions& options);
 
 /// Runs the frontend over the log, showing the scan count, fragments and closures on
-/// `progress`. `name` goes into the fragment set.
+/// `progress`.
 frontend::FrontendResult run_frontend(const frontend::LaserLog& log,
                                       const frontend::FrontendSettings& settings,
-                                      const std::string& name, Progress& progress);
+                                      Progress& progress);
 
 }  // namespace antslam::cli

@@ -1,28 +1,27 @@
 // antslam map LOG --out DIR: the whole AntSLAM pipeline on a CARMEN laser log (paper Secs. III-IV,
-// issue 4 item 6). The frontend builds the fragment set, the optimizer (hybrid + NLopt by
-// default) places the fragments in several trials, and the lowest-weight trial is the map.
-// Writes the fragment set, the corrected and the scan-matcher trajectories (TUM, every scan),
-// the scan-matcher map (Fig. 5a), the optimized map, the average map of the trials (Fig. 5b) and
-// a JSON report; prints every closure's Mahalanobis distance before and after.
+// mapping::run_pipeline). Writes the fragment set, the corrected and the scan-matcher
+// trajectories (TUM, every scan), the scan-matcher map (Fig. 5a), the optimized map, the average
+// map of the trials (Fig. 5b) and a JSON report; prints every closure's Mahalanobis distance
+// before and after.
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
+#include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
-#include "frontend/map_render.hpp"
+#include "frontend/image.hpp"
 #include "frontend_options.hpp"
-#include "frontend_report.hpp"
-#include "map_report.hpp"
-#include "mapping/optimize_map.hpp"
+#include "mapping/pipeline.hpp"
+#include "mapping/report.hpp"
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "validators.hpp"
@@ -30,8 +29,6 @@
 namespace antslam::cli {
 
 namespace {
-
-namespace fe = antslam::frontend;
 
 struct MapOptions {
   std::filesystem::path log, out, reference;
@@ -41,136 +38,110 @@ struct MapOptions {
   bool no_maps = false;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+/// Closures are listed one a line up to this many; beyond, only those outside 2 sigma.
+constexpr std::size_t kListedClosures = 20;
 
-/// The three maps (Fig. 5a, the optimized map, Fig. 5b), written to DIR; returns the paths.
-std::vector<std::filesystem::path> write_maps(const MapOptions& o, const fe::LaserLog& log,
-                                              const fe::FrontendResult& fr,
-                                              const mapping::MappingResult& mr,
-                                              Progress& progress) {
-  const fe::MapLayout layout = fe::map_layout(fr);
-  const std::vector<std::filesystem::path> paths{
-      o.out / "map-scan-matcher.png", o.out / "map-optimized.png", o.out / "map-average.png"};
-  progress.update("maps: scan matcher", true);
-  write_atomically(paths[0], fe::encode_png(fe::render_map(log, layout, mr.scan_matcher_frames,
-                                                           o.frontend.map)));
-  progress.update("maps: optimized", true);
-  write_atomically(paths[1], fe::encode_png(fe::render_map(log, layout, mr.trials[mr.best].frames,
-                                                           o.frontend.map)));
-  progress.update("maps: average of " + std::to_string(mr.trials.size()) + " trials", true);
-  std::vector<std::vector<slam::Pose2>> placements;
-  for (const slam::OptimizeResult& t : mr.trials) placements.push_back(t.frames);
-  write_atomically(paths[2],
-                   fe::encode_png(fe::render_average_map(log, layout, placements, o.frontend.map)));
-  return paths;
-}
-
-std::optional<MapEvaluation> evaluate(const MapOptions& o, const fe::FrontendResult& fr,
-                                      const mapping::MappingResult& mr) {
-  if (o.reference.empty()) return std::nullopt;
-  const slam::Trajectory reference = slam::read_tum_file(o.reference);
-  return MapEvaluation{o.reference.string(), eval::evaluate(fr.trajectory, reference, {}),
-                       eval::evaluate(mr.corrected, reference, {})};
-}
-
-void print_summary(const MapOptions& o, const fe::FrontendResult& fr,
-                   const mapping::MappingResult& mr, const std::optional<MapEvaluation>& e) {
-  const slam::FragmentSet& set = fr.fragment_set;
+void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
+  const slam::FragmentSet& set = r.frontend.fragment_set;
+  const mapping::MappingResult& mr = r.mapping;
   const slam::OptimizeResult& best = mr.trials[mr.best];
   std::printf("%s: %zu scans, %zu fragments, %zu loop closures (frontend %.2f s)\n",
-              o.log.string().c_str(), fr.trajectory.size(), set.fragments.size(),
-              set.closures.size(), fr.stats.matching_seconds + fr.stats.closure_seconds);
+              o.log.string().c_str(), r.frontend.trajectory.size(), set.fragments.size(),
+              set.closures.size(),
+              r.frontend.stats.matching_seconds + r.frontend.stats.closure_seconds);
   std::printf("%s, %zu trials (%.2f s): weight (eq. 10) %.4f -> %.4f, chi2 %.6g -> %.6g\n",
               o.optimizer.method.c_str(), mr.trials.size(), mr.seconds, mr.scan_matcher.weight,
               best.scores.weight, mr.scan_matcher.chi2, best.scores.chi2);
-  std::size_t within = 0;
-  std::printf("loop closures (Mahalanobis distance of the residual, scan matcher -> optimized):\n");
+  if (mr.closing) {
+    std::string distrusted;
+    for (std::size_t c = 0; c < set.closures.size(); ++c)
+      if (!mr.closing->trusted[c])
+        distrusted +=
+            " " + std::to_string(set.closures[c].from) + "-" + std::to_string(set.closures[c].to);
+    const auto trusted = static_cast<std::size_t>(
+        std::count(mr.closing->trusted.begin(), mr.closing->trusted.end(), true));
+    std::printf(
+        "loops closed by least squares with %zu of %zu closures (%s%s): weight %.4f, "
+        "chi2 %.6g\n",
+        trusted, set.closures.size(),
+        distrusted.empty() ? "all consistent" : "distrusted:", distrusted.c_str(), mr.scores.weight,
+        mr.scores.chi2);
+  }
+  std::printf(
+      "loop closures (Mahalanobis distance of the residual, scan matcher -> optimized)%s:\n",
+      mr.after.size() > kListedClosures ? ", those outside 2 sigma" : "");
   for (std::size_t c = 0; c < mr.after.size(); ++c) {
-    const bool ok = mr.after[c].mahalanobis <= kClosureSigmas;
-    within += ok ? 1 : 0;
+    const bool ok = mr.after[c].mahalanobis <= mapping::kClosureSigmas;
+    if (ok && mr.after.size() > kListedClosures) continue;
     std::printf("  %3zu-%-3zu %9.2f -> %6.2f  %s\n", mr.after[c].from, mr.after[c].to,
                 mr.before[c].mahalanobis, mr.after[c].mahalanobis,
                 ok ? "within 2 sigma" : "OUTSIDE 2 sigma");
   }
-  std::printf("  %zu of %zu closures within their 2-sigma ellipse\n", within, mr.after.size());
-  if (e)
+  std::printf("  %zu of %zu closures within their 2-sigma ellipse\n",
+              mr.after.size() - r.verdict.outside.size(), mr.after.size());
+  if (r.evaluation)
     std::printf("ATE RMSE vs %s: scan matcher %.4f m, optimized %.4f m (%zu poses)\n",
-                e->reference.c_str(), e->scan_matcher.ate.translation_m.rmse,
-                e->optimized.ate.translation_m.rmse, e->optimized.associated);
+                r.evaluation->reference.c_str(), r.evaluation->scan_matcher.ate.translation_m.rmse,
+                r.evaluation->optimized.ate.translation_m.rmse, r.evaluation->optimized.associated);
+  for (const std::size_t c : r.verdict.outside)
+    std::printf("warning: loop closure %zu-%zu is %.2f sigma from its hypothesis in the map\n",
+                mr.after[c].from, mr.after[c].to, mr.after[c].mahalanobis);
+  for (const std::string& w : r.warnings) std::printf("warning: %s\n", w.c_str());
 }
 
 void run(MapOptions o) {
-  const auto start = std::chrono::steady_clock::now();
   resolve(o.frontend);
-  o.mapping.optimize = optimize_settings(o.optimizer);
-  o.mapping.backend = o.mapping.optimize.backend;
-  o.frontend.settings.fragmentation.seed = o.mapping.optimize.seed;
-  fe::validate(o.frontend.settings);
-  fe::validate(o.frontend.map);
-  mapping::validate(o.mapping);
-  if (!o.reference.empty() && !std::filesystem::is_regular_file(o.reference))
-    throw std::runtime_error(o.reference.string() + ": cannot open the reference trajectory");
+  mapping::PipelineSettings s;
+  s.sensor = o.frontend.sensor.overrides();
+  s.frontend = o.frontend.settings;
+  s.mapping = o.mapping;
+  s.mapping.optimize = optimize_settings(o.optimizer);
+  s.mapping.backend = s.mapping.optimize.backend;
+  s.frontend.fragmentation.seed = s.mapping.optimize.seed;
+  s.map = o.frontend.map;
+  s.draw_maps = !o.no_maps;
+  mapping::validate(s);
+
+  // Every output is declared (and checked) now; maps this run does not draw are removed from
+  // --out when the outputs are moved into place, so that the directory holds one run.
+  OutputFiles outputs;
+  const std::filesystem::path set_path = outputs.add(o.out / "fragment-set.json");
+  const std::filesystem::path trajectory = outputs.add(o.out / "trajectory.tum");
+  const std::filesystem::path scan_matcher = outputs.add(o.out / "trajectory-scan-matcher.tum");
+  const std::vector<std::filesystem::path> maps = {outputs.add(o.out / "map-scan-matcher.png"),
+                                                   outputs.add(o.out / "map-optimized.png"),
+                                                   outputs.add(o.out / "map-average.png")};
+  const std::filesystem::path report = outputs.add(o.out / "report.json");
 
   Progress progress;
-  progress.update("reading " + o.log.string(), true);
-  const fe::LaserLog log = fe::read_carmen_file(o.log, o.frontend.sensor.overrides());
-  const double read_s = seconds_since(start);
-  const auto frontend_start = std::chrono::steady_clock::now();
-  const fe::FrontendResult fr =
-      run_frontend(log, o.frontend.settings, o.log.filename().string(), progress);
-  const double frontend_s = seconds_since(frontend_start);
-  const slam::FragmentSet& set = fr.fragment_set;
-  if (set.closures.empty())
-    throw std::runtime_error(o.log.string() + ": the frontend found no loop closure in " +
-                             std::to_string(set.fragments.size()) +
-                             " fragments, so there is nothing to optimise (antslam frontend "
-                             "draws the scan-matcher map)");
-  write_atomically(o.out / "fragment-set.json",
-                   [&](std::ostream& out) { slam::write_fragment_set(out, set); });
-
-  const std::string trials = std::to_string(o.mapping.trials);
-  progress.update("optimising: " + o.optimizer.method + ", trial 0/" + trials, true);
-  const mapping::MappingResult mr = mapping::optimize_map(set, o.mapping, [&](std::size_t done) {
-    progress.update(
-        "optimising: " + o.optimizer.method + ", trial " + std::to_string(done) + "/" + trials,
-        done == o.mapping.trials);
+  const mapping::PipelineResult r = in_context_of({o.log, o.reference}, [&] {
+    return mapping::run_pipeline(o.log, s, o.reference, [&](std::string_view stage, bool final) {
+      progress.update(std::string(stage), final);
+    });
   });
-  write_atomically(o.out / "trajectory.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, mr.corrected); });
-  write_atomically(o.out / "trajectory-scan-matcher.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, fr.trajectory); });
-
-  const auto maps_start = std::chrono::steady_clock::now();
-  std::vector<std::filesystem::path> maps;
-  if (!o.no_maps) maps = write_maps(o, log, fr, mr, progress);
-  const double maps_s = seconds_since(maps_start);
-  progress.update("evaluating", true);
-  const std::optional<MapEvaluation> evaluation = evaluate(o, fr, mr);
   progress.clear();
 
-  nlohmann::json report = frontend_input_json(o.log.string(), log, o.frontend);
-  report["frontend"] = frontend_result_json(fr);
-  report["optimization"] = optimization_json(set, o.mapping, mr);
-  report["closures"] = closures_json(set, mr);
-  if (evaluation) report["evaluation"] = evaluation_json(*evaluation);
-  report["times"] = {{"read_s", read_s},
-                     {"frontend_s", frontend_s},
-                     {"scan_matching_s", fr.stats.matching_seconds},
-                     {"loop_closure_s", fr.stats.closure_seconds},
-                     {"optimization_s", mr.seconds},
-                     {"maps_s", maps_s},
-                     {"total_s", seconds_since(start)}};
-  write_atomically(o.out / "report.json",
-                   [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  // The maps last: the trajectory, fragment set and report are there whatever happens to them.
+  outputs.write(set_path,
+                [&](std::ostream& out) { slam::write_fragment_set(out, r.frontend.fragment_set); });
+  outputs.write(trajectory, [&](std::ostream& out) { slam::write_tum(out, r.mapping.corrected); });
+  outputs.write(scan_matcher,
+                [&](std::ostream& out) { slam::write_tum(out, r.frontend.trajectory); });
+  outputs.write(report, json_text(mapping::report_json(o.log.string(), s, r)));
+  if (r.maps) {
+    outputs.write(maps[0], frontend::encode_png(r.maps->scan_matcher));
+    outputs.write(maps[1], frontend::encode_png(r.maps->optimized));
+    outputs.write(maps[2], frontend::encode_png(r.maps->average));
+  }
+  outputs.commit();
 
-  print_summary(o, fr, mr, evaluation);
-  std::printf("wrote %s, %s, %s, %s\n", (o.out / "fragment-set.json").string().c_str(),
-              (o.out / "trajectory.tum").string().c_str(),
-              (o.out / "trajectory-scan-matcher.tum").string().c_str(),
-              (o.out / "report.json").string().c_str());
-  for (const std::filesystem::path& p : maps) std::printf("map: %s\n", p.string().c_str());
+  print_summary(o, r);
+  std::printf("wrote %s, %s, %s, %s\n", set_path.string().c_str(), trajectory.string().c_str(),
+              scan_matcher.string().c_str(), report.string().c_str());
+  if (r.maps)
+    for (const std::filesystem::path& p : maps)
+      std::printf("map: %s (%.3f m per pixel)\n", p.string().c_str(), r.maps->resolution);
+  std::printf("%s\n", r.verdict.line.c_str());
 }
 
 }  // namespace
@@ -188,15 +159,19 @@ void add_map_command(CLI::App& app) {
   sub->add_option("--out", o.out, "output directory")->required();
   sub->add_option("--trials", o.mapping.trials,
                   "optimizer trials; the lowest weight is the map, all of them the average map")
-      ->check(non_negative_integer())
+      ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
   sub->add_option("--threads", o.mapping.threads,
                   "threads the trials run on (0 = all cores); results do not depend on it")
-      ->check(non_negative_integer())
+      ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   sub->add_option("--reference", o.reference,
                   "reference trajectory (TUM) to evaluate both trajectories against");
   sub->add_flag("--no-maps", o.no_maps, "do not draw the maps");
+  sub->add_flag(
+      "--no-closing", [&o](std::int64_t) { o.mapping.closing.enabled = false; },
+      "keep the best trial's map: do not close the loops with the trusted closures by least "
+      "squares afterwards");
   add_optimizer_options(*sub, o.optimizer);
   add_frontend_options(*sub, o.frontend);
   add_map_options(*sub, o.frontend);

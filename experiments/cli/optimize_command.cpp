@@ -11,15 +11,18 @@
 #include <thread>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/memory.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
-#include "eval/ate.hpp"
+#include "eval/evaluation.hpp"
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
 #include "slamgraph/result_io.hpp"
 #include "slamgraph/trials.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -38,46 +41,23 @@ struct OptimizeOptions {
   slam::OptimizeSettings s;  ///< resolved from `optimizer`
 };
 
-slam::FragmentSet load(const OptimizeOptions& o) {
-  if (std::filesystem::path(o.input).extension() != ".g2o")
-    return slam::read_fragment_set_file(o.input);
-  return slam::fragment_set_from_g2o(slam::read_g2o_file(o.input), o.import, o.input);
-}
-
-std::vector<slam::Pose2> reference(const OptimizeOptions& o, const slam::FragmentSet& set) {
-  if (o.reference.empty()) return set.reference;
-  std::vector<slam::Pose2> poses = slam::read_reference_poses(o.reference);
-  if (poses.size() != set.fragments.size())
-    throw std::runtime_error(o.reference + ": has " + std::to_string(poses.size()) +
-                             " poses, the fragment set " + std::to_string(set.fragments.size()));
-  return poses;
-}
-
 std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
                                             const OptimizeOptions& o) {
   Progress progress;
-  if (o.trials > 1) {
-    return slam::run_trials(set, o.s, {o.trials, o.threads, o.s.backend}, [&](std::size_t done) {
-      progress.update("trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
-                      done == o.trials);
-    });
-  }
-  slam::OptimizeSettings s = o.s;
-  s.seed = slam::trial_seed(o.s.seed, 0);  // trial 0 of the study, as with --trials > 1
-  s.threads = o.threads;
-  return {slam::optimize(set, s, [&](const slam::ConvergencePoint& p) {
-    char line[128];
-    std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
-                  static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
-    progress.update(line);
-  })};
-}
-
-/// The best trial's fragment frames against the reference, after rigid SE(2) alignment.
-slam::TrajectoryError trajectory_error(std::span<const slam::Pose2> frames,
-                                       std::span<const slam::Pose2> reference) {
-  const eval::AteResult ate = eval::indexed_ate(frames, reference);
-  return {ate.translation_m.rmse, ate.translation_m.max, ate.rotation_deg.rmse, frames.size()};
+  return slam::run_trials(
+      set, o.s, {o.trials, o.threads, o.s.backend},
+      [&](std::size_t done) {
+        if (o.trials > 1)
+          progress.update(
+              "trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
+              done == o.trials);
+      },
+      [&](const slam::ConvergencePoint& p) {
+        char line[128];
+        std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
+                      static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
+        progress.update(line);
+      });
 }
 
 void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
@@ -97,42 +77,63 @@ void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
                 r.error->rmse_m, r.error->max_m, r.error->rmse_deg);
 }
 
+/// The fragment set of the input: a fragment-set JSON, or a g2o pose graph with -m samples per
+/// alignment (refused up front if they would not fit in memory).
+slam::FragmentSet read_input(const OptimizeOptions& o) {
+  if (std::filesystem::path(o.input).extension() != ".g2o")
+    return slam::read_fragment_set_file(o.input);
+  const slam::PoseGraph graph = slam::read_g2o_file(o.input);
+  require_memory("-m " + std::to_string(o.import.samples) + " (the samples)",
+                 slam::fragment_set_bytes(graph.vertices.size(), o.import.samples, 0));
+  return slam::fragment_set_from_g2o(graph, o.import, o.input);
+}
+
 void run(const OptimizeOptions& options) {
   OptimizeOptions o = options;
   o.s = optimize_settings(o.optimizer);
-  if (o.trials == 0) throw std::invalid_argument("--trials must be >= 1");
+  slam::validate(o.s);
   if (o.threads == 0) o.threads = std::max(1U, std::thread::hardware_concurrency());
-  const slam::FragmentSet set = load(o);
-  const std::vector<slam::Pose2> ref = reference(o, set);
-  const std::vector<slam::OptimizeResult> trials = run_study(set, o);
-  slam::StudyResult r = slam::summarize(o.input, o.s, trials);
-  if (!ref.empty()) r.error = trajectory_error(r.best.frames, ref);
-  print_summary(r, set, o);
-
   const std::string prefix =
       o.output.empty() ? std::filesystem::path(o.input).stem().string() + "." + o.optimizer.method
                        : o.output;
-  write_atomically(prefix + ".json", [&](std::ostream& out) { slam::write_result(out, r); });
-  write_atomically(prefix + ".trials.csv",
-                   [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
-  write_atomically(prefix + ".convergence.csv",
-                   [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
-  write_atomically(prefix + ".times.json",
-                   [&](std::ostream& out) { slam::write_times_json(out, trials); });
-  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv, %s.times.json\n", prefix.c_str(),
-              prefix.c_str(), prefix.c_str(), prefix.c_str());
-  if (!o.g2o_out.empty()) {
-    write_atomically(o.g2o_out, [&](std::ostream& out) {
+  OutputFiles outputs;
+  const std::filesystem::path result_json = outputs.add(prefix + ".json");
+  const std::filesystem::path trials_csv = outputs.add(prefix + ".trials.csv");
+  const std::filesystem::path convergence_csv = outputs.add(prefix + ".convergence.csv");
+  const std::filesystem::path times_json = outputs.add(prefix + ".times.json");
+  if (!o.g2o_out.empty()) outputs.add(o.g2o_out);
+  if (!o.tum_out.empty()) outputs.add(o.tum_out);
+
+  const slam::FragmentSet set = in_context_of(o.input, [&] { return read_input(o); });
+  require_memory("--trials " + std::to_string(o.trials) + " (the trials' results)",
+                 static_cast<double>(o.trials) * slam::trial_result_bytes(set));
+  const std::vector<slam::Pose2> reference = slam::reference_frames(set, o.reference);
+  const std::vector<slam::OptimizeResult> trials =
+      in_context_of(o.input, [&] { return run_study(set, o); });
+  slam::StudyResult r = slam::summarize(o.input, o.s, trials);
+  if (!reference.empty()) r.error = eval::frames_error(r.best.frames, reference);
+
+  outputs.write(result_json, [&](std::ostream& out) { slam::write_result(out, r); });
+  outputs.write(trials_csv,
+                [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
+  outputs.write(convergence_csv,
+                [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
+  outputs.write(times_json, [&](std::ostream& out) { slam::write_times_json(out, trials); });
+  if (!o.g2o_out.empty())
+    outputs.write(o.g2o_out, [&](std::ostream& out) {
       slam::write_g2o(out, slam::pose_graph_of(set, r.best.frames));
     });
-    std::printf("wrote %s\n", o.g2o_out.c_str());
-  }
-  if (!o.tum_out.empty()) {
-    write_atomically(o.tum_out, [&](std::ostream& out) {
+  if (!o.tum_out.empty())
+    outputs.write(o.tum_out, [&](std::ostream& out) {
       slam::write_tum(out, slam::world_trajectory(set, r.best.frames));
     });
-    std::printf("wrote %s\n", o.tum_out.c_str());
-  }
+  outputs.commit();
+
+  print_summary(r, set, o);
+  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv, %s.times.json\n", prefix.c_str(),
+              prefix.c_str(), prefix.c_str(), prefix.c_str());
+  if (!o.g2o_out.empty()) std::printf("wrote %s\n", o.g2o_out.c_str());
+  if (!o.tum_out.empty()) std::printf("wrote %s\n", o.tum_out.c_str());
 }
 
 }  // namespace
@@ -142,12 +143,15 @@ void add_optimize_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("optimize", "Run an optimizer on a fragment set");
   cmd->add_option("input", o->input, "fragment-set JSON or g2o pose graph (.g2o)")->required();
   cmd->add_option("--trials", o->trials, "independent trials (trial t: seed mix(seed, t))")
+      ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads,
                   "threads: trials run in parallel (with --trials 1: the ants); 0 = all cores")
+      ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   add_optimizer_options(*cmd, o->optimizer);
   cmd->add_option("-m,--samples", o->import.samples, "g2o input: samples drawn per alignment")
+      ->check(count_in(1, kMaxSamples))
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
                   "ground-truth poses (.g2o, .tum, `x y theta` lines) for the trajectory error");

@@ -3,12 +3,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "slamgraph/chain.hpp"
 #include "slamgraph/g2o.hpp"
@@ -26,17 +29,22 @@ struct OutliersOptions {
   slam::OutlierSettings s;
 };
 
+/// The most false closures one call adds (a count beyond it is a typing error).
+constexpr std::uint64_t kMaxOutliers = 10'000'000;
+
 void run(OutliersOptions o) {
-  const auto kind = slam::parse_outlier_kind(o.kind);
-  if (!kind) throw std::invalid_argument("--kind: unknown kind '" + o.kind + "'");
-  o.s.kind = *kind;
+  o.s.kind = *slam::parse_outlier_kind(o.kind);  // --kind is checked at parse time
+  OutputFiles outputs;
+  const std::filesystem::path graph_out = outputs.add(o.output);
+  const std::filesystem::path list = outputs.add(slam::outliers_path_of(o.output));
   const slam::PoseGraph graph = slam::read_g2o_file(o.input);
-  slam::split_chain(graph, o.input);  // the robust back ends need a chain: refuse early
-  const slam::SpoiledGraph spoiled = slam::add_outliers(graph, o.s);
-  const std::filesystem::path list = slam::outliers_path_of(o.output);
-  write_atomically(o.output, [&](std::ostream& out) { slam::write_g2o(out, spoiled.graph); });
-  write_atomically(list,
-                   [&](std::ostream& out) { slam::write_outlier_pairs(out, spoiled.outliers); });
+  const slam::SpoiledGraph spoiled = in_context_of(o.input, [&] {
+    slam::split_chain(graph, o.input);  // the robust back ends need a chain: refuse early
+    return slam::add_outliers(graph, o.s);
+  });
+  outputs.write(graph_out, [&](std::ostream& out) { slam::write_g2o(out, spoiled.graph); });
+  outputs.write(list, [&](std::ostream& out) { slam::write_outlier_pairs(out, spoiled.outliers); });
+  outputs.commit();
   std::printf("wrote %s: %zu vertices, %zu edges, %zu false loop closures (%s, seed %llu)\n",
               o.output.c_str(), spoiled.graph.vertices.size(), spoiled.graph.edges.size(),
               spoiled.outliers.size(), o.kind.c_str(), static_cast<unsigned long long>(o.s.seed));
@@ -55,7 +63,7 @@ void add_outliers_command(CLI::App& app) {
                   "closures (`i j` a line)")
       ->required();
   cmd->add_option("--count", o->s.count, "false loop closures to add")
-      ->check(non_negative_integer())
+      ->check(count_in(0, kMaxOutliers))
       ->capture_default_str();
   std::vector<std::string> kinds;
   std::string help = "how their vertices are drawn:";
@@ -65,7 +73,7 @@ void add_outliers_command(CLI::App& app) {
   }
   cmd->add_option("--kind", o->kind, help)->check(CLI::IsMember(kinds))->capture_default_str();
   cmd->add_option("--group-size", o->s.group_size, "closures per group (group kinds)")
-      ->check(non_negative_integer())
+      ->check(count_in(1, kMaxOutliers))
       ->capture_default_str();
   cmd->add_option("--seed", o->s.seed, "seed of every draw")
       ->check(non_negative_integer())

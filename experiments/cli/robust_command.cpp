@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -14,10 +15,12 @@
 
 #include "aco/variant.hpp"
 #include "backend_option.hpp"
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/ate.hpp"
 #include "slamgraph/g2o.hpp"
+#include "slamgraph/optimize.hpp"
 #include "slamgraph/outliers.hpp"
 #include "slamgraph/robust.hpp"
 #include "validators.hpp"
@@ -25,6 +28,8 @@
 namespace antslam::cli {
 
 namespace {
+
+constexpr std::uint64_t kMaxIterations = 100'000'000;  ///< --iterations (count)
 
 struct RobustOptions {
   std::string input;
@@ -116,27 +121,31 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
 }
 
 void run(RobustOptions o) {
-  const auto method = slam::parse_robust_method(o.method);
-  if (!method) throw std::invalid_argument("--method: unknown method '" + o.method + "'");
-  const auto variant = aco::parse_variant(o.variant);
-  if (!variant) throw std::invalid_argument("--variant: unknown variant '" + o.variant + "'");
-  o.s.aco.parameters.variant = *variant;
+  const slam::RobustMethod method = *slam::parse_robust_method(o.method);  // checked at parse
+  o.s.aco.parameters.variant = *aco::parse_variant(o.variant);             // time, both
   o.s.backend = parse_backend_option(o.backend);
   aco::resolve(o.s.backend, o.s.threads);  // serial on more than one thread fails here, up front
+  OutputFiles outputs;
+  const std::filesystem::path graph_out = outputs.add(o.output + ".g2o");
+  const std::filesystem::path accepted_out = outputs.add(o.output + ".accepted.txt");
+  const std::filesystem::path json_out = outputs.add(o.output + ".json");
 
-  // Everything is read and checked before anything is computed or written.
+  // Everything is read and checked before anything is computed.
   const slam::PoseGraph graph = slam::read_g2o_file(o.input);
-  const slam::ChainSplit split = slam::split_chain(graph, o.input);
-  const std::optional<std::vector<bool>> outlier = outlier_flags(o, graph, split);
+  const slam::ChainSplit split =
+      in_context_of(o.input, [&] { return slam::split_chain(graph, o.input); });
+  const std::optional<std::vector<bool>> outlier =
+      in_context_of(outliers_file(o), [&] { return outlier_flags(o, graph, split); });
   std::vector<std::vector<slam::Pose2>> reference_poses;
   for (const std::string& path : o.references) {
     reference_poses.push_back(slam::read_reference_poses(path));
     if (reference_poses.back().size() != graph.vertices.size())
-      throw std::runtime_error(path + ": has " + std::to_string(reference_poses.back().size()) +
-                               " poses, the graph " + std::to_string(graph.vertices.size()));
+      throw InputError(path + ": has " + std::to_string(reference_poses.back().size()) +
+                       " poses, the graph " + std::to_string(graph.vertices.size()));
   }
 
-  const slam::RobustResult r = slam::solve_robust(graph, *method, o.s, o.input);
+  const slam::RobustResult r =
+      in_context_of(o.input, [&] { return slam::solve_robust(graph, method, o.s, o.input); });
 
   std::optional<slam::AcceptanceScores> scores;
   if (outlier) scores = slam::score_acceptance(r.accepted, *outlier);
@@ -144,18 +153,19 @@ void run(RobustOptions o) {
   for (std::size_t i = 0; i < o.references.size(); ++i)
     references.push_back({o.references[i], eval::indexed_ate(r.poses, reference_poses[i])});
 
-  write_atomically(o.output + ".g2o",
-                   [&](std::ostream& out) { slam::write_g2o(out, slam::kept_graph(graph, r)); });
-  write_atomically(o.output + ".accepted.txt", [&](std::ostream& out) {
+  outputs.write(graph_out,
+                [&](std::ostream& out) { slam::write_g2o(out, slam::kept_graph(graph, r)); });
+  outputs.write(accepted_out, [&](std::ostream& out) {
     for (std::size_t k = 0; k < split.closures.size(); ++k)
       if (r.accepted[k]) {
         const slam::PoseGraphEdge& e = graph.edges[split.closures[k]];
         out << e.from << ' ' << e.to << '\n';
       }
   });
-  write_atomically(o.output + ".json", [&](std::ostream& out) {
+  outputs.write(json_out, [&](std::ostream& out) {
     out << report(o, graph, r, scores, references).dump(2) << '\n';
   });
+  outputs.commit();
 
   const auto accepted = std::count(r.accepted.begin(), r.accepted.end(), true);
   std::printf("%s on %s: %zu of %zu loop closures accepted", o.method.c_str(), o.input.c_str(),
@@ -208,17 +218,18 @@ void add_robust_command(CLI::App& app) {
       ->check(CLI::IsMember(aco::variant_names()))
       ->capture_default_str();
   cmd->add_option("--ants", o->s.aco.parameters.ants, "pcm-aco: ants (0 = the variant's default)")
-      ->check(non_negative_integer())
+      ->check(count_in(0, slam::kMaxAnts))
       ->capture_default_str();
   cmd->add_option("--iterations", o->s.aco.termination.max_iterations,
                   "pcm-aco: iterations at most")
-      ->check(non_negative_integer())
+      ->check(count_in(1, kMaxIterations))
       ->capture_default_str();
   cmd->add_option("--seed", o->s.aco.parameters.seed, "pcm-aco: seed of the ants")
       ->check(non_negative_integer())
       ->capture_default_str();
-  cmd->add_option("--threads", o->s.threads, "threads for the consistency pairs and the ants")
-      ->check(non_negative_integer())
+  cmd->add_option("--threads", o->s.threads,
+                  "threads for the consistency pairs and the ants (0 = all cores)")
+      ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   add_backend_option(*cmd, o->backend);
   cmd->callback([o] { run(*o); });

@@ -14,14 +14,17 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/evaluation.hpp"
 #include "frontend/carmen_writer.hpp"
 #include "frontend/laser_log.hpp"
-#include "frontend/odometry_noise.hpp"
+#include "frontend/odometry_benchmark.hpp"
 #include "sensor_options.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -35,49 +38,15 @@ struct SimulateOptions {
   SensorOptions sensor;
 };
 
-/// Scan timestamps that do not strictly increase (csail-corrected prints 6 digits: 365 scans
-/// share one) cannot be associated; they are replaced by evenly spaced ones over the same span
-/// (1 s apart if the span is empty). Returns false if the stamps were usable as they are.
-bool restamp_if_needed(frontend::LaserLog& log) {
-  auto& scans = log.scans;
-  bool increasing = true;
-  for (std::size_t i = 1; i < scans.size(); ++i) increasing &= scans[i].stamp > scans[i - 1].stamp;
-  if (increasing) return false;
-  const double first = scans.front().stamp;
-  const double span = scans.back().stamp - first;
-  const double period = span > 0.0 ? span / static_cast<double>(scans.size() - 1) : 1.0;
-  for (std::size_t i = 0; i < scans.size(); ++i)
-    scans[i].stamp = first + static_cast<double>(i) * period;
-  return true;
-}
-
-double path_length(const std::vector<slam::Pose2>& path) {
-  double length = 0.0;
-  for (std::size_t i = 1; i < path.size(); ++i)
-    length += (path[i].translation() - path[i - 1].translation()).norm();
-  return length;
-}
-
 void run(const SimulateOptions& o) {
   frontend::validate(o.noise);
-  frontend::LaserLog log = frontend::read_carmen_file(o.log, o.sensor.overrides());
-  const bool restamped = restamp_if_needed(log);
-
-  std::vector<slam::Pose2> corrected;
-  slam::Trajectory reference;
-  for (const frontend::LaserScan& scan : log.scans) {
-    corrected.push_back(scan.odometry);
-    reference.push_back({scan.stamp, scan.odometry});
-  }
-  aco::Rng rng(aco::mix_seed(o.seed, 0x0D0));
-  const std::vector<slam::Pose2> odometry = frontend::noisy_odometry(corrected, o.noise, rng);
-  slam::Trajectory noisy;
-  for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    log.scans[i].odometry = odometry[i];
-    noisy.push_back({log.scans[i].stamp, odometry[i]});
-  }
-  const std::size_t dropped_odom = log.odometry.size();
-  log.odometry.clear();  // ODOM messages hold corrected poses: they would leak the reference
+  OutputFiles outputs;
+  const std::filesystem::path log_out = outputs.add(o.out / "log.clf");
+  const std::filesystem::path reference = outputs.add(o.out / "reference.tum");
+  const std::filesystem::path report_path = outputs.add(o.out / "report.json");
+  frontend::LaserLog log = read_laser_log(o.log, o.sensor);
+  const frontend::OdometryBenchmark b = in_context_of(
+      o.log, [&] { return frontend::simulate_odometry(std::move(log), o.noise, o.seed); });
 
   std::ostringstream noise;
   noise << "linear " << o.noise.linear << " m/m, angular " << o.noise.angular << " rad/rad, drift "
@@ -87,38 +56,37 @@ void run(const SimulateOptions& o) {
           " with odometry derived from its corrected poses",
       "seed " + std::to_string(o.seed) + "; noise per step: " + noise.str(),
       "the corrected poses are in reference.tum; ODOM messages were dropped"};
-  write_atomically(o.out / "log.clf",
-                   [&](std::ostream& out) { frontend::write_carmen(out, log, comments); });
-  write_atomically(o.out / "reference.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, reference); });
+  outputs.write(log_out, [&](std::ostream& out) { frontend::write_carmen(out, b.log, comments); });
+  outputs.write(reference, [&](std::ostream& out) { slam::write_tum(out, b.reference); });
 
-  const eval::Evaluation drift = eval::evaluate(noisy, reference, {});
-  const double length = path_length(corrected);
+  const eval::Evaluation drift =
+      in_context_of(o.log, [&] { return eval::evaluate(b.odometry, b.reference, {}); });
+  const double length = slam::path_length(b.reference);
   const nlohmann::json report = {{"log", o.log.string()},
-                                 {"scans", log.scans.size()},
+                                 {"scans", b.log.scans.size()},
                                  {"seed", o.seed},
                                  {"noise",
                                   {{"linear_m_per_m", o.noise.linear},
                                    {"angular_rad_per_rad", o.noise.angular},
                                    {"drift_rad_per_m", o.noise.drift},
                                    {"heading_bias_rad_per_m", o.noise.heading_bias}}},
-                                 {"restamped", restamped},
-                                 {"dropped_odom_messages", dropped_odom},
+                                 {"restamped", b.restamped},
+                                 {"dropped_odom_messages", b.dropped_odometry},
                                  {"path_length_m", length},
                                  {"odometry_ate_rmse_m", drift.ate.translation_m.rmse},
                                  {"odometry_ate_max_m", drift.ate.translation_m.max}};
-  write_atomically(o.out / "report.json",
-                   [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  outputs.write(report_path, json_text(report));
+  outputs.commit();
 
-  if (restamped)
+  if (b.restamped)
     std::printf("%s: scan timestamps do not increase strictly: re-stamped evenly from %.6f s\n",
-                o.log.string().c_str(), log.scans.front().stamp);
+                o.log.string().c_str(), b.log.scans.front().stamp);
   std::printf(
       "%s: %zu scans, %.1f m; simulated odometry (seed %llu): ATE %.3f m rmse, %.3f m max\n",
-      o.log.string().c_str(), log.scans.size(), length, static_cast<unsigned long long>(o.seed),
+      o.log.string().c_str(), b.log.scans.size(), length, static_cast<unsigned long long>(o.seed),
       drift.ate.translation_m.rmse, drift.ate.translation_m.max);
-  std::printf("wrote %s, %s, %s\n", (o.out / "log.clf").string().c_str(),
-              (o.out / "reference.tum").string().c_str(), (o.out / "report.json").string().c_str());
+  std::printf("wrote %s, %s, %s\n", log_out.string().c_str(), reference.string().c_str(),
+              report_path.string().c_str());
 }
 
 }  // namespace
@@ -133,16 +101,22 @@ void add_simulate_odometry_command(CLI::App& app) {
   cmd->add_option("log", o.log, "corrected CARMEN log (pose = odom = corrected; may be gzipped)")
       ->required();
   cmd->add_option("--out", o.out, "output directory")->required();
-  cmd->add_option("--seed", o.seed, "seed of the odometry noise")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "seed of the odometry noise")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   cmd->add_option("--linear-noise", o.noise.linear, "std of translation error per metre, m/m")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   cmd->add_option("--angular-noise", o.noise.angular,
                   "std of heading error per radian turned, rad/rad")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   cmd->add_option("--drift-noise", o.noise.drift, "std of heading error per metre, rad/m")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   cmd->add_option("--heading-bias", o.noise.heading_bias,
                   "systematic heading error per metre, rad/m")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   add_sensor_options(*cmd, o.sensor);
   cmd->callback([options] { run(*options); });

@@ -1,6 +1,7 @@
-"""What the experiment scripts share: running the `antslam` program, the machine's load,
-statistics, CSV and Markdown output, and the step-function helpers of scripts/slam_experiments.py
-(imported, not copied). Run the scripts with /usr/bin/python3 (Debian's matplotlib)."""
+"""What the experiment scripts share: the options every experiment has, running the `antslam`
+program and reading what `antslam optimize` writes, the machine's load, statistics (mean +- std,
+median, the mean of step functions over trials), CSV, Markdown and PNG output written atomically,
+and --publish. Run the scripts with /usr/bin/python3 (Debian's matplotlib)."""
 import argparse
 import csv
 import json
@@ -17,17 +18,64 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402,F401  (re-exported for the scripts)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from slam_experiments import read_traces, step_mean  # noqa: E402,F401
-
 DATA = os.path.join(ROOT, "data")
 FIGURES = os.path.join(ROOT, "docs", "figures")
 
 
+def integer_at_least(low):
+    """An argparse type: an integer >= low, else one line naming the value."""
+
+    def parse(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not an integer") from None
+        if value < low:
+            raise argparse.ArgumentTypeError(f"{value} is below {low}")
+        return value
+
+    return parse
+
+
+class OneLineErrorParser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line, `SCRIPT: error: PROBLEM`, exit status 2,
+    and whose count options (count_option) default to one value for a full run and another
+    with --quick."""
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.count_defaults = {}
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+    def parse_args(self, *arguments):
+        args = super().parse_args(*arguments)
+        for dest, (full, quick) in self.count_defaults.items():
+            if getattr(args, dest) is None:
+                setattr(args, dest, quick if args.quick else full)
+        return args
+
+
+def count_option(p, name, what, full, quick, low=1):
+    """An integer option >= low (trials, runs, repeats ...): `full` by default, `quick` with
+    --quick."""
+    dest = name.lstrip("-").replace("-", "_")
+    p.add_argument(name, type=integer_at_least(low), default=None,
+                   help=f"{what} ({full}; quick {quick})")
+    p.count_defaults[dest] = (full, quick)
+
+
+def threads_option(p):
+    """--threads of `antslam optimize`: 1 by default, so that every trial's time is its own."""
+    p.add_argument("--threads", type=integer_at_least(1), default=1,
+                   help="threads of antslam optimize (1: per-trial times are not shared)")
+
+
 def parser(description, default_out):
     """The options every experiment has."""
-    p = argparse.ArgumentParser(description=description,
-                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = OneLineErrorParser(description=description,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--antslam", default=os.path.join(ROOT, "build", "experiments", "antslam"),
                    help="the antslam program (build it first: cmake --build build --target "
                         "antslam)")
@@ -36,7 +84,7 @@ def parser(description, default_out):
     p.add_argument("--quick", action="store_true",
                    help="few trials and small budgets: a smoke test of the whole experiment")
     p.add_argument("--publish", action="store_true",
-                   help="also copy the PNG figures to docs/figures/results-*.png")
+                   help="also copy the CSV and PNG files to docs/figures/results-*")
     return p
 
 
@@ -48,18 +96,21 @@ def check_program(args):
     os.makedirs(args.out, exist_ok=True)
 
 
-def has_subcommand(args, name):
-    text = subprocess.run([args.antslam, "--help"], capture_output=True, text=True).stdout
-    return any(line.split()[:1] == [name] for line in text.splitlines())
-
-
-def antslam(args, *cmd, capture=False):
-    """Runs one antslam subcommand; stops the experiment with its error line if it fails."""
-    cmd = [args.antslam, *map(str, cmd)]
+def run_program(*cmd):
+    """Runs a program; stops the experiment with one line (the command and the program's last
+    error line) if it fails. Returns its stdout."""
+    cmd = [*map(str, cmd)]
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0:
-        sys.exit(f"failed: {' '.join(cmd)}\n{done.stderr.strip()}")
-    return done.stdout if capture else None
+        lines = done.stderr.strip().splitlines()
+        sys.exit(f"failed: {' '.join(cmd)}: "
+                 f"{lines[-1] if lines else f'exit status {done.returncode}'}")
+    return done.stdout
+
+
+def antslam(args, *cmd):
+    """Runs one antslam subcommand (see run_program); returns its stdout."""
+    return run_program(args.antslam, *cmd)
 
 
 def load_average():
@@ -91,6 +142,36 @@ def median(values):
     return values[mid] if len(values) % 2 else 0.5 * (values[mid - 1] + values[mid])
 
 
+def step_mean(traces, grid):
+    """Mean and std over trials of the best weight (a step function of time) on a grid; a grid
+    point is drawn once 95% of the trials have a first result. A trace is a list of (time,
+    weight) points in increasing time."""
+    means, stds = [], []
+    for t in grid:
+        vals = []
+        for trace in traces:
+            v = None
+            for (et, w) in trace:
+                if et <= t:
+                    v = w
+            if v is not None:
+                vals.append(v)
+        if len(vals) < 0.95 * len(traces):
+            means.append(float("nan"))
+            stds.append(float("nan"))
+            continue
+        m = sum(vals) / len(vals)
+        means.append(m)
+        stds.append((sum((v - m) ** 2 for v in vals) / max(1, len(vals) - 1)) ** 0.5)
+    return means, stds
+
+
+def path_length(tum):
+    """Metres along the positions of a TUM trajectory file."""
+    poses = [tuple(map(float, line.split()[1:3])) for line in open(tum) if line[0] != "#"]
+    return sum(math.dist(a, b) for a, b in zip(poses, poses[1:]))
+
+
 def read_json(path):
     with open(path) as f:
         return json.load(f)
@@ -99,6 +180,14 @@ def read_json(path):
 def read_csv(path):
     with open(path) as f:
         return list(csv.DictReader(f))
+
+
+def read_result(prefix):
+    """The result file of `antslam optimize -o PREFIX` (PREFIX.json) with the wall-clock times
+    of PREFIX.times.json as result["elapsed_s"] (mean, std, ... over the trials)."""
+    result = read_json(prefix + ".json")
+    result["elapsed_s"] = read_json(prefix + ".times.json")["elapsed_s"]
+    return result
 
 
 def read_study(prefix):
@@ -118,11 +207,57 @@ def read_study(prefix):
     return trials, [traces[t] for t in sorted(traces)]
 
 
+def write_atomically(path, write):
+    """Calls write(temporary path), then renames the file to path: a reader never sees a half
+    written file, and a failed run leaves the previous file as it was."""
+    tmp = f"{path}.tmp-{os.getpid()}"
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def write_text(path, text):
+    def write(tmp):
+        with open(tmp, "w") as f:
+            f.write(text)
+
+    write_atomically(path, write)
+
+
 def write_csv(path, header, rows):
-    with open(path, "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(header)
-        w.writerows(rows)
+    def write(tmp):
+        with open(tmp, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(header)
+            w.writerows(rows)
+
+    write_atomically(path, write)
+
+
+def publish(args, path, name):
+    """With --publish, copies a result file to docs/figures/results-NAME."""
+    if args.publish:
+        os.makedirs(FIGURES, exist_ok=True)
+        target = os.path.join(FIGURES, f"results-{name}")
+        write_atomically(target, lambda tmp: shutil.copyfile(path, tmp))
+
+
+def save_csv(args, name, header, rows):
+    """Writes OUT/name.csv and, with --publish, docs/figures/results-name.csv."""
+    path = os.path.join(args.out, name + ".csv")
+    write_csv(path, header, rows)
+    publish(args, path, name + ".csv")
+    return path
+
+
+def save_table(args, text):
+    """Writes OUT/table.md (the Markdown the experiment's docs section shows)."""
+    path = os.path.join(args.out, "table.md")
+    write_text(path, text)
+    return path
 
 
 def markdown_table(header, rows):
@@ -151,8 +286,7 @@ def save_figure(args, fig, name):
     """Writes OUT/name.png and, with --publish, docs/figures/results-name.png."""
     path = os.path.join(args.out, name + ".png")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    if args.publish:
-        os.makedirs(FIGURES, exist_ok=True)
-        shutil.copyfile(path, os.path.join(FIGURES, f"results-{name}.png"))
+    write_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"))
+    plt.close(fig)
+    publish(args, path, name + ".png")
     return path

@@ -14,14 +14,16 @@ fig5-DATASET.png into the results folder.
 Panel (b) is the paper's: `antslam map` runs the same frontend and fragment set (seed 1) and the
 same hybrid trials and averages their maps. (b') adds the trajectories: a tight bundle says the
 trials agree, a fan shows where they do not.
+
+--quick: malaga and aces, 3 trials of 300 iterations, maps at 0.2 m per cell.
 """
 import os
 
 import matplotlib.image as mpimg
 
-from experiment_common import (DATA, antslam, check_program, header, markdown_table, parser,
-                               plt, pm, progress, read_csv, read_json, read_study, save_figure,
-                               stats, step_mean, write_csv)
+from experiment_common import (DATA, antslam, check_program, header, count_option,
+                               markdown_table, parser, plt, pm, progress, read_csv, read_json,
+                               read_study, save_csv, save_figure, save_table, stats, step_mean)
 
 LASER = os.path.join(DATA, "laser")
 
@@ -45,7 +47,7 @@ def study(args, name):
     log, reference = prepare(args, name)
     work = os.path.join(args.out, name)
     antslam(args, "frontend", log, "--out", os.path.join(work, "frontend"), "--average-samples",
-            args.trials)
+            args.trials, *args.map_options)
     fragment_set = os.path.join(work, "fragment-set.json")
     antslam(args, "fragment-set", log, "-o", fragment_set)
     progress(f"{name}: {args.trials} hybrid trials")
@@ -54,7 +56,7 @@ def study(args, name):
             "--seed", 1, "--iterations", args.iterations, "-o", prefix)
     progress(f"{name}: average map of the {args.trials} hybrid trials")
     antslam(args, "map", log, "--method", "hybrid", "--trials", args.trials, "--seed", 1,
-            "--iterations", args.iterations, "--out", os.path.join(work, "map"))
+            "--iterations", args.iterations, "--out", os.path.join(work, "map"), *args.map_options)
     trials, points = read_study(prefix)
     traces = [[(float(p["elapsed_s"]), float(p["best_weight"])) for p in trace]
               for trace in points]
@@ -117,10 +119,10 @@ def plot(args, name, r):
 
 def main():
     p = parser(__doc__, "fig5")
-    p.add_argument("--trials", type=int, default=None, help="trials (100; quick 10)")
+    count_option(p, "--trials", "trials", 100, 3)
     args = p.parse_args()
-    args.trials = args.trials or (10 if args.quick else 100)
     args.iterations = 300 if args.quick else 3000
+    args.map_options = ["--resolution", 0.2] if args.quick else []
     check_program(args)
     head = header(args, "experiments/scripts/fig5.py")  # the load before the runs
     names = ["malaga", "aces"] if args.quick else ["malaga", "aces", "intel"]
@@ -133,13 +135,12 @@ def main():
         times = stats([float(t["elapsed_s"]) for t in r["trials"]])
         ate = stats([row[3] for row in r["rows"] if row[3] != ""])
         table.append([name, len(r["trials"]), pm(weights), f"{1e3 * times['mean']:.1f}", pm(ate)])
-    write_csv(os.path.join(args.out, "fig5.csv"), ["dataset", "seed", "weight", "ate_rmse_m"],
-              rows)
-    with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(head)
-        f.write(f"AntSLAM hybrid, {args.iterations} iterations, 20 ants.\n\n")
-        f.write(markdown_table(["dataset", "trials", "final weight", "ms per trial",
-                                "ATE RMSE (m)"], table))
+    save_csv(args, "fig5", ["dataset", "seed", "weight", "ate_rmse_m"], rows)
+    text = (f"AntSLAM hybrid, {args.iterations} iterations, 20 ants.\n\n"
+            + markdown_table(["dataset", "trials", "final weight", "ms per trial",
+                              "ATE RMSE (m)"], table))
+    save_table(args, head + text)
+    print(text, end="")
     progress(f"wrote {args.out}/fig5.csv, table.md, " + ", ".join(f"fig5-{n}.png" for n in names))
 
 

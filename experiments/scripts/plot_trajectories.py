@@ -42,7 +42,8 @@ def main():
 
     fig, ax = plt.subplots(figsize=(7, 7), dpi=120)
     x, y = read_tum(args.reference)
-    ax.plot(x, y, color="black", linewidth=1.2, label=f"reference ({args.reference.split('/')[-1]})")
+    ax.plot(x, y, color="black", linewidth=1.2,
+            label=f"reference ({args.reference.split('/')[-1]})")
     for path in args.estimates:
         x, y = read_tum(path)
         ax.plot(x, y, linewidth=0.9, alpha=0.85, label=path.split("/")[-1])

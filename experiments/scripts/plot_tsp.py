@@ -34,7 +34,8 @@ def read_tsplib_section(path, section):
 
 
 def plot_tour(instance, tour, out):
-    coords = {int(r[0]): (float(r[1]), float(r[2])) for r in read_tsplib_section(instance, "NODE_COORD_SECTION")}
+    coords = {int(r[0]): (float(r[1]), float(r[2]))
+              for r in read_tsplib_section(instance, "NODE_COORD_SECTION")}
     order = [int(t) for row in read_tsplib_section(tour, "TOUR_SECTION") for t in row]
     order = order[: order.index(-1)] if -1 in order else order
     xs = [coords[i][0] for i in order + order[:1]]

@@ -13,11 +13,14 @@ Methods: odometry only; the scan matcher alone (the frontend's pre-solution); ti
 (hybrid) and AntSLAM + NLopt and Ceres least squares on the same fragment set
 (`antslam fragment-set` then `antslam optimize --tum-out`: each scan's corrected pose is its
 fragment's optimized frame times its pose in the fragment).
+
+--quick: aces and intel-subset, 1 run, 300 ACO iterations.
 """
 import os
 
-from experiment_common import (DATA, antslam, check_program, header, markdown_table, parser,
-                               plt, pm, progress, read_json, save_figure, stats, write_csv)
+from experiment_common import (DATA, antslam, check_program, header, count_option,
+                               markdown_table, parser, path_length, plt, pm, progress, read_json,
+                               save_csv, save_figure, save_table, stats)
 
 LASER = os.path.join(DATA, "laser")
 CORRECTED = ["aces", "intel", "freiburg-079", "csail"]
@@ -25,11 +28,7 @@ RAW = [("mit-csail", "mit-csail.clf", "mit-csail.ref.tum", None),
        ("intel-subset", "intel-subset.clf", "intel-subset.ref.tum", "intel.relations")]
 OPTIMIZERS = ["hybrid", "hybrid+nlopt", "ceres"]
 METHODS = ["odometry", "scan-matcher", "tinyslam"] + OPTIMIZERS
-
-
-def path_length(tum):
-    poses = [tuple(map(float, line.split()[1:3])) for line in open(tum) if line[0] != "#"]
-    return sum(((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5 for a, b in zip(poses, poses[1:]))
+QUICK = ["aces", "intel-subset"]  # one corrected log, one raw log with relations
 
 
 def score(args, estimate, reference, relations):
@@ -65,16 +64,19 @@ def trajectories(args, log, work, seed, frontend_done):
 
 def main():
     p = parser(__doc__, "table1")
-    p.add_argument("--runs", type=int, default=None, help="runs per dataset (10; quick 2)")
+    count_option(p, "--runs", "runs per dataset", 10, 1)
     p.add_argument("--datasets", default=None,
                    help="comma-separated subset of " + ",".join(CORRECTED + [r[0] for r in RAW]))
     args = p.parse_args()
-    args.runs = args.runs or (2 if args.quick else 10)
     check_program(args)
     head = header(args, "experiments/scripts/table1.py")  # the load before the runs
     datasets = [(name, None, None) for name in CORRECTED] + [(r[0], r, None) for r in RAW]
-    if args.datasets:
-        datasets = [d for d in datasets if d[0] in args.datasets.split(",")]
+    chosen = args.datasets or (",".join(QUICK) if args.quick else None)
+    if chosen:
+        unknown = set(chosen.split(",")) - {d[0] for d in datasets}
+        if unknown:
+            p.error(f"--datasets: unknown {', '.join(sorted(unknown))}")
+        datasets = [d for d in datasets if d[0] in chosen.split(",")]
     rows, table, lengths = [], [], {}
     for name, raw, _ in datasets:
         results = {m: [] for m in METHODS}
@@ -98,24 +100,24 @@ def main():
             for method, tum in tums.items():
                 ate, rot, rel = score(args, tum, reference, relations)
                 results[method].append((ate, rot, rel))
-                rows.append([name, method, run, lengths[name], ate, rot, "" if rel is None else rel])
+                rows.append([name, method, run, lengths[name], ate, rot,
+                             "" if rel is None else rel])
         for method in METHODS:
             ate = stats([r[0] for r in results[method]])
             rel = stats([r[2] for r in results[method]])
             table.append([name, f"{lengths[name]:.0f}", method, ate["n"], pm(ate),
                           pm(stats([r[1] for r in results[method]]), 2), pm(rel)])
-    write_csv(os.path.join(args.out, "table1.csv"),
-              ["dataset", "method", "run", "path_length_m", "ate_rmse_m", "ate_rot_rmse_deg",
-               "relations_translation_mean_m"], rows)
+    save_csv(args, "table1", ["dataset", "method", "run", "path_length_m", "ate_rmse_m",
+                              "ate_rot_rmse_deg", "relations_translation_mean_m"], rows)
     plot(args, rows, [d[0] for d in datasets])
-    with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(head)
-        f.write("ATE RMSE (m), mean +- std over runs; lowest mean in bold.\n\n")
-        f.write(matrix(rows, [d[0] for d in datasets], 4) + "\n")
-        f.write("Relations metric, mean translational error (m):\n\n")
-        f.write(matrix([r for r in rows if r[6] != ""], [r[0] for r in RAW if r[3]], 6, 3) + "\n")
-        f.write(markdown_table(["dataset", "path (m)", "method", "runs", "ATE RMSE (m)",
-                                "ATE rot RMSE (deg)", "relations transl. (m)"], table))
+    text = ("ATE RMSE (m), mean +- std over runs; lowest mean in bold.\n\n"
+            + matrix(rows, [d[0] for d in datasets], 4) + "\n"
+            + "Relations metric, mean translational error (m):\n\n"
+            + matrix([r for r in rows if r[6] != ""], [r[0] for r in RAW if r[3]], 6, 3) + "\n"
+            + markdown_table(["dataset", "path (m)", "method", "runs", "ATE RMSE (m)",
+                              "ATE rot RMSE (deg)", "relations transl. (m)"], table))
+    save_table(args, head + text)
+    print(text, end="")
     progress(f"wrote {args.out}/table1.csv, table.md, table1.png")
 
 
@@ -130,8 +132,8 @@ def matrix(rows, names, column, digits=2):
         best = min(cells[m]["mean"] for m in METHODS if cells[m]["n"])
         length = next(r[3] for r in rows if r[0] == name)
         table.append([f"{name} ({length:.0f} m)"] +
-                     [f"**{pm(cells[m], digits)}**" if cells[m]["mean"] == best else pm(cells[m], digits)
-                      for m in METHODS])
+                     [f"**{pm(cells[m], digits)}**" if cells[m]["mean"] == best
+                      else pm(cells[m], digits) for m in METHODS])
     return markdown_table(["dataset (path)"] + METHODS, table)
 
 

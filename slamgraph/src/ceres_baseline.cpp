@@ -1,6 +1,7 @@
 #include "slamgraph/ceres_baseline.hpp"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -24,6 +25,10 @@ class WelschLoss final : public ceres::LossFunction {
 };
 
 }  // namespace
+
+void show_solver_logs(bool show) {
+  FLAGS_minloglevel = show ? google::GLOG_INFO : google::GLOG_FATAL;
+}
 
 CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> initial, bool robust,
                                 const CeresSettings& settings) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "aco/random.hpp"
+#include "slamgraph/fragment_set_io.hpp"
 #include "text_lines.hpp"
 
 namespace antslam::slam {
@@ -118,8 +119,7 @@ PoseGraph read_g2o(std::istream& in, const std::string& source) {
 }
 
 PoseGraph read_g2o_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::ifstream in = detail::open_input(path);
   return read_g2o(in, path.string());
 }
 
@@ -215,9 +215,23 @@ std::vector<Pose2> read_reference_poses(const std::filesystem::path& path) {
     for (const StampedPose& p : read_tum_file(path)) poses.push_back(p.pose);
     return poses;
   }
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::ifstream in = detail::open_input(path);
   return read_pose_lines(in, path.string());
+}
+
+FragmentSet read_optimizer_input(const std::filesystem::path& path,
+                                 const G2oImportSettings& settings) {
+  if (path.extension() != ".g2o") return read_fragment_set_file(path);
+  return fragment_set_from_g2o(read_g2o_file(path), settings, path.string());
+}
+
+std::vector<Pose2> reference_frames(const FragmentSet& set, const std::filesystem::path& path) {
+  if (path.empty()) return set.reference;
+  std::vector<Pose2> poses = read_reference_poses(path);
+  if (poses.size() != set.fragments.size())
+    throw std::runtime_error(path.string() + ": has " + std::to_string(poses.size()) +
+                             " poses, the fragment set " + std::to_string(set.fragments.size()));
+  return poses;
 }
 
 }  // namespace antslam::slam

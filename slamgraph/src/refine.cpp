@@ -130,6 +130,11 @@ std::vector<double> Refiner::minimise(const std::vector<double>& x,
 }
 
 RefineResult Refiner::refine(std::span<const Pose2> start) {
+  return refine(start, settings_.time_limit_s);
+}
+
+RefineResult Refiner::refine(std::span<const Pose2> start, double seconds) {
+  if (!(seconds >= 0.0)) throw std::invalid_argument("refine: time limit must be >= 0");
   std::vector<double> x = AlignmentObjective::pack(start);
   if (x.size() != objective_.dimension())
     throw std::invalid_argument("refine: got " + std::to_string(start.size()) +
@@ -145,26 +150,34 @@ RefineResult Refiner::refine(std::span<const Pose2> start) {
     }
   }
   const auto began = std::chrono::steady_clock::now();
+  // Seconds left for NLopt (0 = no limit), and whether the budget is spent.
   const auto remaining = [&] {
-    if (settings_.time_limit_s <= 0.0) return 0.0;
+    if (seconds <= 0.0) return 0.0;
     const std::chrono::duration<double> used = std::chrono::steady_clock::now() - began;
-    return std::max(1e-6, settings_.time_limit_s - used.count());
+    return std::max(1e-6, seconds - used.count());
+  };
+  const auto spent = [&] {
+    return seconds > 0.0 &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count() >=
+               seconds;
   };
   RefineResult result;
   objective_.set_kernel_width(1.0);
   result.start = objective_.evaluate(x);
   std::vector<double> best = minimise(x, lower, upper, remaining(), result.evaluations);
   result.scores = objective_.evaluate(best);
-  if (settings_.graduated) {
+  if (settings_.graduated && !spent()) {
     // Stages s_0 = sqrt(chi2) >= every term's Mahalanobis distance, s_0 / f, ..., 1.
     double width = std::max(1.0, std::sqrt(result.start.chi2));
     std::vector<double> point = x;
     for (;;) {
+      if (spent()) break;
       objective_.set_kernel_width(width);
       point = minimise(point, lower, upper, remaining(), result.evaluations);
       if (width == 1.0) break;
       width = std::max(1.0, width / settings_.graduation_factor);
     }
+    objective_.set_kernel_width(1.0);  // the stages may have ended early, at a wider kernel
     const Scores graduated = objective_.evaluate(point);
     if (graduated.weight < result.scores.weight) {
       best = point;

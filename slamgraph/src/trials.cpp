@@ -15,10 +15,19 @@ std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial) {
 }
 
 std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
-                                       const TrialSettings& trials,
-                                       const TrialsObserver& observer) {
+                                       const TrialSettings& trials, const TrialsObserver& observer,
+                                       const OptimizeObserver& convergence) {
   if (trials.trials == 0) throw std::invalid_argument("trials must be >= 1");
   validate(set);
+  if (trials.trials == 1) {
+    OptimizeSettings s = settings;
+    s.seed = trial_seed(settings.seed, 0);
+    s.threads = trials.threads;
+    s.backend = trials.backend;
+    std::vector<OptimizeResult> results{optimize(set, s, convergence)};
+    if (observer) observer(1);
+    return results;
+  }
   std::vector<OptimizeResult> results(trials.trials);
   std::mutex mutex;
   std::size_t finished = 0;
@@ -35,6 +44,14 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
     });
   });
   return results;
+}
+
+double trial_result_bytes(const FragmentSet& set) {
+  constexpr double kConvergencePoints = 64;  // improvements recorded per trial, typically
+  const auto n = static_cast<double>(set.fragments.size());
+  return static_cast<double>(sizeof(OptimizeResult)) +
+         n * (2.0 * sizeof(Pose2) + sizeof(std::uint32_t)) +
+         kConvergencePoints * sizeof(ConvergencePoint);
 }
 
 std::size_t best_trial(std::span<const OptimizeResult> trials) {

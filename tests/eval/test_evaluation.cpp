@@ -108,5 +108,26 @@ TEST(Report, JsonAndTableCarryTheResults) {
   EXPECT_NE(table.str().find("RPE step: 2 m"), std::string::npos);
 }
 
+TEST(FramesError, ZeroForARigidlyMovedCopyAndByHandForOneShiftedPose) {
+  const std::vector<slam::Pose2> reference{{0, 0, 0}, {2, 0, 0.5}, {2, 2, 1.5}, {0, 2, 3}};
+  std::vector<slam::Pose2> moved;
+  for (const slam::Pose2& p : reference) moved.push_back(slam::Pose2{1, -3, 0.4} * p);
+  const slam::TrajectoryError zero = frames_error(moved, reference);
+  EXPECT_NEAR(zero.rmse_m, 0.0, 1e-9);
+  EXPECT_NEAR(zero.rmse_deg, 0.0, 1e-6);
+  EXPECT_EQ(zero.poses, 4U);
+  // The square stretched symmetrically along x: the best rigid alignment is the identity (the
+  // centroid and the rotation stay), and every pose is 0.1 m off.
+  std::vector<slam::Pose2> apart = reference;
+  apart[0].x -= 0.1;
+  apart[1].x += 0.1;
+  apart[2].x += 0.1;
+  apart[3].x -= 0.1;
+  const slam::TrajectoryError e = frames_error(apart, reference);
+  EXPECT_NEAR(e.rmse_m, 0.1, 1e-9);
+  EXPECT_NEAR(e.max_m, 0.1, 1e-9);
+  EXPECT_THROW(frames_error(apart, std::vector<slam::Pose2>(3)), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace antslam::eval

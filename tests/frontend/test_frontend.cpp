@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "frontend/frontend.hpp"
+#include "frontend/map_render.hpp"
+#include "frontend/report.hpp"
 #include "frontend/simulator.hpp"
 
 namespace antslam::frontend {
@@ -76,6 +78,65 @@ TEST(Frontend, RejectsNonsenseSettingsBeforeWork) {
   s = {};
   s.matcher.max_range = 0.0;
   EXPECT_THROW(Frontend(s, "x"), std::invalid_argument);
+}
+
+TEST(Frontend, ObserverSeesEveryScanAndTheFinalCounts) {
+  const SimulatedRun run = small_run();
+  FrontendSettings s;
+  s.fragmentation.length = 3.0;
+  std::vector<FrontendProgress> seen;
+  const FrontendResult r =
+      run_frontend(run.log, s, [&](const FrontendProgress& p) { seen.push_back(p); });
+  ASSERT_EQ(seen.size(), run.log.scans.size());
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].scan, i + 1);
+    EXPECT_EQ(seen[i].scans, run.log.scans.size());
+  }
+  EXPECT_EQ(seen.back().fragments, r.fragments.size());
+  EXPECT_EQ(to_string(FrontendProgress{12, 225, 3, 1}),
+            "frontend: scan 12/225, fragments 3, closures 1");
+}
+
+TEST(Frontend, ReportNamesTheAlignmentAndHoldsEveryFragment) {
+  for (const AlignmentCovariance c :
+       {AlignmentCovariance::accumulated, AlignmentCovariance::exit_scan})
+    EXPECT_EQ(parse_alignment_covariance(to_string(c)), c);
+  EXPECT_THROW(parse_alignment_covariance("exit"), std::invalid_argument);
+  const SimulatedRun run = small_run();
+  FrontendSettings s;
+  s.fragmentation.length = 3.0;
+  s.fragmentation.covariance = AlignmentCovariance::exit_scan;
+  const FrontendResult r = run_frontend(run.log, s);
+  const nlohmann::json input = input_json("run.clf", run.log, s, MapRenderSettings{});
+  EXPECT_EQ(input["settings"]["alignment"], "exit-scan");
+  EXPECT_EQ(input["scans"], run.log.scans.size());
+  const nlohmann::json result = result_json(r);
+  EXPECT_EQ(result["fragments"].size(), r.fragments.size());
+  EXPECT_EQ(result["fragments"][1]["first_scan"], r.fragments[1].first_scan);
+}
+
+TEST(Frontend, SampleAverageMapIsSeeded) {
+  const SimulatedRun run = small_run();
+  FrontendSettings s;
+  s.fragmentation.length = 3.0;
+  const FrontendResult r = run_frontend(run.log, s);
+  MapRenderSettings m;
+  m.resolution = 0.25;
+  const Image a = render_sample_average_map(run.log, r, 4, 7, m);
+  const Image b = render_sample_average_map(run.log, r, 4, 7, m);
+  const Image c = render_sample_average_map(run.log, r, 4, 8, m);
+  ASSERT_EQ(a.width(), b.width());
+  ASSERT_EQ(a.height(), b.height());
+  std::size_t same = 0, differ = 0;
+  for (std::size_t y = 0; y < a.height(); ++y)
+    for (std::size_t x = 0; x < a.width(); ++x) same += a.at(x, y) == b.at(x, y) ? 1U : 0U;
+  EXPECT_EQ(same, a.width() * a.height());
+  const bool same_size = c.width() == a.width() && c.height() == a.height();
+  if (same_size)
+    for (std::size_t y = 0; y < a.height(); ++y)
+      for (std::size_t x = 0; x < a.width(); ++x) differ += a.at(x, y) == c.at(x, y) ? 0U : 1U;
+  EXPECT_TRUE(!same_size || differ > 0);
+  EXPECT_THROW(render_sample_average_map(run.log, r, 0, 7, m), std::invalid_argument);
 }
 
 }  // namespace

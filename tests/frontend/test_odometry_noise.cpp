@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "frontend/odometry_benchmark.hpp"
 #include "frontend/odometry_noise.hpp"
 #include "frontend/simulator.hpp"
 
@@ -95,6 +96,61 @@ TEST(OdometryNoise, RejectsNegativeOrNonFiniteNoise) {
   noise = {};
   noise.heading_bias = NAN;
   EXPECT_THROW(validate(noise), std::invalid_argument);
+}
+
+LaserLog corrected_log(std::vector<double> stamps) {
+  LaserLog log;
+  log.source = "corrected.log";
+  for (std::size_t i = 0; i < stamps.size(); ++i) {
+    LaserScan scan;
+    scan.stamp = stamps[i];
+    scan.odometry = slam::Pose2{static_cast<double>(i), 0.5 * static_cast<double>(i), 0.1};
+    log.scans.push_back(scan);
+  }
+  log.odometry = {{0.0, {}}, {1.0, {}}};
+  return log;
+}
+
+TEST(OdometryBenchmark, RestampsOnlyStampsThatDoNotIncrease) {
+  LaserLog increasing = corrected_log({1.0, 1.5, 3.0});
+  EXPECT_FALSE(restamp_evenly(increasing));
+  EXPECT_EQ(increasing.scans[1].stamp, 1.5);
+  LaserLog repeated = corrected_log({10.0, 10.0, 10.0, 13.0});
+  EXPECT_TRUE(restamp_evenly(repeated));
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_DOUBLE_EQ(repeated.scans[i].stamp, 10.0 + static_cast<double>(i));
+  LaserLog constant = corrected_log({5.0, 5.0});
+  EXPECT_TRUE(restamp_evenly(constant));
+  EXPECT_DOUBLE_EQ(constant.scans[1].stamp, 6.0);  // an empty span: 1 s apart
+}
+
+TEST(OdometryBenchmark, ZeroNoiseOdometryIsTheReferenceAndOdomMessagesAreDropped) {
+  const OdometryBenchmark b = simulate_odometry(corrected_log({0.0, 0.0, 1.0}), silent(), 9);
+  EXPECT_TRUE(b.restamped);
+  EXPECT_EQ(b.dropped_odometry, 2U);
+  EXPECT_TRUE(b.log.odometry.empty());
+  ASSERT_EQ(b.reference.size(), 3U);
+  ASSERT_EQ(b.odometry.size(), 3U);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(b.reference[i].stamp, b.log.scans[i].stamp);
+    EXPECT_EQ(b.reference[i].pose.x, static_cast<double>(i));
+    EXPECT_NEAR(b.odometry[i].pose.x, b.reference[i].pose.x, 1e-12);
+    EXPECT_NEAR(b.odometry[i].pose.y, b.reference[i].pose.y, 1e-12);
+    EXPECT_EQ(b.log.scans[i].odometry.x, b.odometry[i].pose.x);
+  }
+}
+
+TEST(OdometryBenchmark, NoiseIsSeededAndLeavesTheReferenceAlone) {
+  const OdometryNoise noise;
+  const OdometryBenchmark a = simulate_odometry(corrected_log({0, 1, 2, 3}), noise, 4);
+  const OdometryBenchmark b = simulate_odometry(corrected_log({0, 1, 2, 3}), noise, 4);
+  const OdometryBenchmark c = simulate_odometry(corrected_log({0, 1, 2, 3}), noise, 5);
+  EXPECT_EQ(a.odometry.back().pose.x, b.odometry.back().pose.x);
+  EXPECT_NE(a.odometry.back().pose.x, c.odometry.back().pose.x);
+  EXPECT_EQ(a.reference.back().pose.x, 3.0);
+  OdometryNoise bad;
+  bad.linear = -1.0;
+  EXPECT_THROW(simulate_odometry(corrected_log({0, 1}), bad, 1), std::invalid_argument);
 }
 
 }  // namespace

@@ -194,5 +194,26 @@ TEST(ReferencePoses, ReadsXyThetaLinesAndG2o) {
   }
 }
 
+TEST(G2o, OptimizerInputByExtensionAndReferenceFramesOfTheRightCount) {
+  const std::filesystem::path dir = std::filesystem::path(ANTSLAM_TEST_TMP) / "optimizer-input";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path graph = dir / "square.g2o";
+  std::ofstream(graph) << kGraph;
+  const FragmentSet set = read_optimizer_input(graph, {.samples = 5, .seed = 3});
+  EXPECT_EQ(set.fragments.size(), 4U);
+  EXPECT_EQ(set.fragments[1].samples.size(), 5U);
+  // The vertices of a .g2o file are reference poses of the right count.
+  const std::vector<Pose2> reference = reference_frames(set, graph);
+  ASSERT_EQ(reference.size(), 4U);
+  EXPECT_DOUBLE_EQ(reference[2].y, 1.0);
+  EXPECT_EQ(reference_frames(set, {}).size(), set.reference.size());
+  const std::filesystem::path three = dir / "three.txt";
+  std::ofstream(three) << "0 0 0\n1 0 0\n2 0 0\n";
+  EXPECT_EQ(testing::error_of([&] { reference_frames(set, three); }),
+            three.string() + ": has 3 poses, the fragment set 4");
+  // Any other extension is a fragment-set JSON.
+  EXPECT_THROW(read_optimizer_input(three, {}), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace antslam::slam

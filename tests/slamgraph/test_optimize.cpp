@@ -138,5 +138,22 @@ TEST(Optimize, RejectsNonsense) {
   EXPECT_THROW(parse_method("hybrid-nlopt"), std::invalid_argument);
 }
 
+TEST(Trials, OneTrialRunsItsAntsOnTheThreadsAndReportsConvergence) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  const OptimizeSettings s = quick(Method::hybrid, 11);
+  std::size_t improvements = 0, finished = 0;
+  const auto one = run_trials(
+      set, s, {.trials = 1, .threads = 2, .backend = aco::BackendKind::tbb},
+      [&](std::size_t done) { finished = done; }, [&](const ConvergencePoint&) { ++improvements; });
+  ASSERT_EQ(one.size(), 1U);
+  EXPECT_EQ(finished, 1U);
+  EXPECT_EQ(improvements, one[0].convergence.size());
+  EXPECT_GT(improvements, 0U);
+  OptimizeSettings first = s;
+  first.seed = trial_seed(11, 0);
+  EXPECT_EQ(optimize(set, first).choice, one[0].choice);
+  EXPECT_EQ(one[0].colony->threads, 2U);
+}
+
 }  // namespace
 }  // namespace antslam::slam

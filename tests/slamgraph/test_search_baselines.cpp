@@ -50,7 +50,7 @@ TEST(Exhaustive, RefusesTooLargeTrees) {
   }
 }
 
-// Issue item 10: on small sets (N = 5, M = 6) the hybrid with the paper's parameters finds the
+// On small sets (N = 5, M = 6) the hybrid with the paper's parameters finds the
 // exhaustive optimum for most seeds.
 TEST(Exhaustive, HybridFindsTheOptimumOnSmallSetsForMostSeeds) {
   int found = 0, runs = 0;

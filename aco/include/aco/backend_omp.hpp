@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "aco/backend_kind.hpp"
+#include "aco/detail/fork_join_order.hpp"
 
 namespace antslam::aco {
 
@@ -25,8 +26,11 @@ class OmpBackend {
     std::exception_ptr error;
     std::mutex error_mutex;
     const auto n = static_cast<long long>(count);
+    detail::ForkJoinOrder order;
+    order.fork();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(static_cast <int>(threads_))
     for (long long i = 0; i < n; ++i) {
+      const detail::ForkJoinOrder::Iteration iteration(order);
       try {
         f(static_cast<std::size_t>(i));
       } catch (...) {
@@ -34,6 +38,7 @@ class OmpBackend {
         if (!error) error = std::current_exception();
       }
     }
+    order.join();
     if (error) std::rethrow_exception(error);
   }
 

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "aco/backend_kind.hpp"
+#include "aco/detail/fork_join_order.hpp"
 
 namespace antslam::aco {
 
@@ -26,12 +27,16 @@ class TbbBackend {
 
   template <class F>
   void for_each(std::size_t count, F&& f) {
+    detail::ForkJoinOrder order;
+    order.fork();
     arena_->execute([&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1),
                         [&](const tbb::blocked_range<std::size_t>& range) {
+                          const detail::ForkJoinOrder::Iteration iteration(order);
                           for (std::size_t i = range.begin(); i != range.end(); ++i) f(i);
                         });
     });
+    order.join();
   }
 
  private:

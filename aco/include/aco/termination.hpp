@@ -18,6 +18,10 @@ struct Termination {
   double target_cost = -std::numeric_limits<double>::infinity();  ///< stop once best <= target
   std::uint64_t stagnation_iterations = 0;  ///< stop after this many iterations without a new
                                             ///< global best; 0 = never
+  /// When the wall-clock budget starts; default (the clock's epoch): when the run starts. A
+  /// caller whose budget also covers building the problem and the colony (a million cities take
+  /// seconds) sets it to its own start.
+  std::chrono::steady_clock::time_point start{};
 
   bool bounded() const {
     return max_iterations > 0 || time_limit_s > 0.0 || cpu_time_limit_s > 0.0 ||

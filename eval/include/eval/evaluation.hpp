@@ -9,6 +9,7 @@
 #include "eval/ate.hpp"
 #include "eval/relations_error.hpp"
 #include "eval/rpe.hpp"
+#include "slamgraph/result_io.hpp"
 #include "slamgraph/trajectory.hpp"
 
 namespace antslam::eval {
@@ -36,5 +37,11 @@ struct Evaluation {
 /// score. An empty `relations` means: no relations metric.
 Evaluation evaluate(const slam::Trajectory& estimate, const slam::Trajectory& reference,
                     const EvaluationSettings& settings, std::span<const Relation> relations = {});
+
+/// Poses without timestamps (e.g. fragment frames F_i) against reference poses of the same
+/// index, after rigid SE(2) alignment: the absolute trajectory error. Throws
+/// std::invalid_argument if the sizes differ or are zero.
+slam::TrajectoryError frames_error(std::span<const slam::Pose2> frames,
+                                   std::span<const slam::Pose2> reference);
 
 }  // namespace antslam::eval

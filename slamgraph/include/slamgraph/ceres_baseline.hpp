@@ -1,5 +1,5 @@
 #pragma once
-// Ceres pose-graph optimisation on the same graph (issue item 8): the comparison with
+// Ceres pose-graph optimisation on the same graph: the comparison with
 // state-of-the-art optimisation that the paper asks for (Sec. V).
 //
 // Unknowns: the world poses of F_2..F_N (F_1 = W is held constant). Residual blocks: one per
@@ -33,6 +33,11 @@ struct CeresResult {
   int iterations = 0;         ///< solver iterations
   bool converged = false;     ///< Ceres reported convergence
 };
+
+/// Whether Ceres prints its own warnings and diagnostics (through glog) on stderr. They are
+/// shown unless this is called with false; antslam shows them only with --verbose, so that a
+/// failure is the one line its error names.
+void show_solver_logs(bool show);
 
 /// Runs Ceres from the world frames that `initial` alignments chain to (alignments.size() ==
 /// N - 1). Throws std::invalid_argument on wrong sizes, std::runtime_error if Ceres fails.

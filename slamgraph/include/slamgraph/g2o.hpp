@@ -1,5 +1,5 @@
 #pragma once
-// 2D pose graphs in g2o format (issue item 5): `VERTEX_SE2 id x y theta` and
+// 2D pose graphs in g2o format: `VERTEX_SE2 id x y theta` and
 // `EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33` (the measurement is the pose of j in i's
 // frame; I is the upper triangle of the information matrix). Standard graphs become fragment
 // sets, and results go back to g2o, so every optimizer runs on data/posegraphs.
@@ -66,6 +66,16 @@ std::vector<Pose2> read_reference_poses(const std::filesystem::path& path);
 /// vertex `from` (one of the edge's ends): inverted, to first order, when the edge is stored the
 /// other way round.
 Gaussian2 oriented(const PoseGraphEdge& edge, std::size_t from);
+
+/// A fragment set from a file: fragment_set_from_g2o of a pose graph if the name ends in .g2o,
+/// a fragment-set JSON (fragment_set_io.hpp) otherwise.
+FragmentSet read_optimizer_input(const std::filesystem::path& path,
+                                 const G2oImportSettings& settings);
+
+/// Reference poses of the set's fragments: the set's own `reference` if `path` is empty, else
+/// read_reference_poses(path). Throws std::runtime_error if a file's pose count is not the
+/// set's fragment count.
+std::vector<Pose2> reference_frames(const FragmentSet& set, const std::filesystem::path& path);
 
 /// Covariance of z^-1 for z ~ N(measurement, covariance), to first order.
 Eigen::Matrix3d inverse_covariance(const Pose2& measurement, const Eigen::Matrix3d& covariance);

@@ -1,5 +1,5 @@
 #pragma once
-// Discrete baselines on the same tree of samples (issue item 8): exhaustive search, which proves
+// Discrete baselines on the same tree of samples: exhaustive search, which proves
 // optimality on small sets, and uniform random sampling, which shows what the ants add at the
 // same evaluation budget.
 
@@ -32,7 +32,8 @@ using SearchObserver = std::function<void(std::uint64_t, std::uint64_t, double)>
 
 /// Uniform random sampling at the ants' budget: in each of `iterations` rounds, `paths` paths
 /// are drawn uniformly (path p of round t from aco::ant_stream(seed, t, p), so the result does
-/// not depend on threads) and the best is kept. Stops early after `time_limit_s` (0 = none).
+/// not depend on threads) and the best is kept. Stops early after `time_limit_s` (0 = none);
+/// 0 rounds means no limit on rounds (then a time limit is required). At least one round runs.
 SearchResult random_search(const SlamProblem& problem, std::uint64_t iterations, std::size_t paths,
                            std::uint64_t seed, double time_limit_s,
                            const SearchObserver& observer = {});

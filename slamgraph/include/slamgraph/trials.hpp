@@ -26,12 +26,19 @@ struct TrialSettings {
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the trials in parallel
 };
 
-/// Runs trials.trials trials of settings.method (settings.seed seeds the study; each trial is
-/// serial, so settings.threads and settings.backend are ignored), spread over trials.threads
-/// threads by trials.backend.
+/// Runs trials.trials trials of settings.method (settings.seed seeds the study; settings.threads
+/// and settings.backend are ignored). Several trials are spread over trials.threads threads by
+/// trials.backend, each trial serial; a single trial runs its ants on them instead, and
+/// `convergence` sees its every improvement. The results do not depend on the threads.
 std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
                                        const TrialSettings& trials,
-                                       const TrialsObserver& observer = {});
+                                       const TrialsObserver& observer = {},
+                                       const OptimizeObserver& convergence = {});
+
+/// Bytes one trial's result holds for a set of this size (frames, alignments, choice and a
+/// convergence record of typical length), so that a caller can refuse a trial count that
+/// cannot fit in memory before running it.
+double trial_result_bytes(const FragmentSet& set);
 
 /// The trial with the lowest eq. (10) weight (the first on ties); throws on an empty span.
 std::size_t best_trial(std::span<const OptimizeResult> trials);

@@ -1,6 +1,8 @@
-#include "frontend_report.hpp"
+#include "frontend/report.hpp"
 
-namespace antslam::cli {
+#include <stdexcept>
+
+namespace antslam::frontend {
 
 using nlohmann::json;
 
@@ -16,9 +18,20 @@ json gaussian_json(const slam::Gaussian2& g) {
   return {{"mean", pose_json(g.mean())}, {"covariance", covariance_json(g.covariance())}};
 }
 
-json frontend_input_json(const std::string& log_path, const frontend::LaserLog& log,
-                         const FrontendOptions& o) {
-  const frontend::FrontendSettings& s = o.settings;
+std::string_view to_string(AlignmentCovariance covariance) {
+  return covariance == AlignmentCovariance::exit_scan ? "exit-scan" : "accumulated";
+}
+
+AlignmentCovariance parse_alignment_covariance(std::string_view name) {
+  for (const AlignmentCovariance c :
+       {AlignmentCovariance::accumulated, AlignmentCovariance::exit_scan})
+    if (to_string(c) == name) return c;
+  throw std::invalid_argument("unknown alignment covariance '" + std::string(name) +
+                              "' (accumulated, exit-scan)");
+}
+
+json input_json(const std::string& log_path, const LaserLog& log, const FrontendSettings& s,
+                const MapRenderSettings& map) {
   return {{"log", log_path},
           {"scans", log.scans.size()},
           {"beams", log.scans.front().ranges.size()},
@@ -27,20 +40,20 @@ json frontend_input_json(const std::string& log_path, const frontend::LaserLog& 
            {{"fragment_length_m", s.fragmentation.length},
             {"samples", s.fragmentation.samples},
             {"seed", s.fragmentation.seed},
-            {"alignment", o.alignment},
+            {"alignment", to_string(s.fragmentation.covariance)},
             {"covariance_scale", s.fragmentation.covariance_scale},
             {"temperature", s.matcher.temperature},
             {"closures", s.closure.enabled},
             {"closure_min_score", s.closure.min_score},
             {"closure_max_second_ratio", s.closure.max_second_ratio},
             {"closure_temperature", s.closure.temperature},
-            {"map_resolution_m", o.map.resolution}}}};
+            {"map_resolution_m", map.resolution}}}};
 }
 
-json frontend_result_json(const frontend::FrontendResult& r) {
+json result_json(const FrontendResult& r) {
   json fragments = json::array();
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
-    const frontend::FragmentRecord& f = r.fragments[i];
+    const FragmentRecord& f = r.fragments[i];
     const slam::Fragment& s = r.fragment_set.fragments[i];
     json entry = {{"index", i},
                   {"first_scan", f.first_scan},
@@ -59,7 +72,7 @@ json frontend_result_json(const frontend::FrontendResult& r) {
                         {"anchor", pose_json(c.anchor)},
                         {"hypothesis", gaussian_json(c.hypothesis)}});
   json attempts = json::array();
-  for (const frontend::ClosureAttempt& a : r.attempts)
+  for (const ClosureAttempt& a : r.attempts)
     attempts.push_back({{"from", a.from},
                         {"to", a.to},
                         {"ellipse_mahalanobis2", a.mahalanobis},
@@ -71,11 +84,23 @@ json frontend_result_json(const frontend::FrontendResult& r) {
                         {"accepted", a.match.accepted},
                         {"reason", a.match.reason},
                         {"seconds", a.seconds}});
-  return {
-      {"stats", {{"unmatched_scans", r.stats.unmatched}, {"recovered_scans", r.stats.recovered}}},
-      {"fragments", fragments},
-      {"closures", closures},
-      {"closure_attempts", attempts}};
+  json fallbacks = json::array();
+  for (std::size_t i = 0; i < r.scans.size(); ++i)
+    if (!r.scans[i].matched_by_scan())
+      fallbacks.push_back({{"scan", i},
+                           {"stamp", r.trajectory[i].stamp},
+                           {"status", frontend::to_string(r.scans[i].status)},
+                           {"prior_mahalanobis", r.scans[i].prior_mahalanobis},
+                           {"inlier_fraction", r.scans[i].inlier_fraction}});
+  return {{"stats",
+           {{"unmatched_scans", r.stats.unmatched},
+            {"recovered_scans", r.stats.recovered},
+            {"diverged_scans", r.stats.diverged},
+            {"odometry_along_flat_scans", r.stats.odometry_along_flat}}},
+          {"matcher_fallbacks", fallbacks},
+          {"fragments", fragments},
+          {"closures", closures},
+          {"closure_attempts", attempts}};
 }
 
-}  // namespace antslam::cli
+}  // namespace antslam::frontend

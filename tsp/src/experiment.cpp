@@ -1,0 +1,130 @@
+#include "tsp/experiment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <stdexcept>
+
+#include "aco/backend_kind.hpp"
+#include "tsp/optima.hpp"
+#include "tsp/tsplib.hpp"
+
+namespace antslam::tsp {
+
+void validate(const ExperimentSettings& s) {
+  if (!s.termination.bounded())
+    throw std::invalid_argument("experiment: set a budget (iterations, time or CPU time)");
+  if (s.instances.empty()) throw std::invalid_argument("experiment: no instance");
+  if (s.variants.empty()) throw std::invalid_argument("experiment: no variant");
+  if (s.threads.empty()) throw std::invalid_argument("experiment: no thread count");
+  if (s.seeds == 0) throw std::invalid_argument("experiment: seeds must be >= 1");
+  for (const std::size_t threads : s.threads) aco::resolve(s.solver.backend, threads);
+}
+
+double ExperimentRun::excess_percent() const {
+  return optimum ? 100.0 * (length / *optimum - 1.0) : NAN;
+}
+
+std::vector<ExperimentRun> run_experiment(const ExperimentSettings& settings,
+                                          const ExperimentObserver& observer) {
+  validate(settings);
+  const std::size_t total = settings.instances.size() * settings.variants.size() *
+                            settings.threads.size() * settings.seeds;
+  std::vector<ExperimentRun> runs;
+  runs.reserve(total);
+  for (const std::filesystem::path& path : settings.instances) {
+    const TspProblem problem(read_instance(path), settings.problem);
+    const std::optional<double> optimum = known_optimum(path);
+    aco::Termination termination = settings.termination;
+    if (settings.stop_at_optimum && optimum) termination.target_cost = *optimum;
+    for (const aco::Variant variant : settings.variants)
+      for (const std::size_t threads : settings.threads)
+        for (std::uint64_t s = 0; s < settings.seeds; ++s) {
+          SolverSettings solver = settings.solver;
+          solver.aco.variant = variant;
+          solver.aco.seed = settings.first_seed + s;
+          solver.threads = threads;
+          ExperimentRun r{problem.instance().name(),
+                          problem.size(),
+                          variant,
+                          threads,
+                          solver.aco.seed,
+                          0.0,
+                          optimum,
+                          {}};
+          const std::size_t index = runs.size();
+          r.result = solve(problem, solver, termination, [&](const aco::IterationReport& report) {
+            if (observer) observer(index, total, r, report);
+          });
+          r.length = problem.instance().tour_length(r.result.best.path);
+          runs.push_back(std::move(r));
+        }
+  }
+  return runs;
+}
+
+std::filesystem::path resolve_instance(const std::string& name,
+                                       const std::filesystem::path& data_dir) {
+  if (std::filesystem::is_regular_file(name)) return name;
+  const std::filesystem::path path = data_dir / (name + ".tsp");
+  if (!std::filesystem::is_regular_file(path))
+    throw std::runtime_error("'" + name + "' is neither a file nor " + path.string());
+  return path;
+}
+
+void write_runs_csv(std::ostream& out, std::span<const ExperimentRun> runs,
+                    std::string_view local_search) {
+  out << "instance,cities,variant,local_search,threads,seed,best_length,optimum,excess_percent,"
+         "hit_optimum,iterations,best_iteration,time_to_best_s,elapsed_s,stop_reason\n"
+      << std::setprecision(10);
+  for (const ExperimentRun& r : runs)
+    out << r.instance << ',' << r.cities << ',' << aco::to_string(r.variant) << ',' << local_search
+        << ',' << r.threads << ',' << r.seed << ',' << r.length << ','
+        << (r.optimum ? *r.optimum : NAN) << ',' << r.excess_percent() << ','
+        << (r.hit_optimum() ? 1 : 0) << ',' << r.result.iterations << ',' << r.result.best_iteration
+        << ',' << r.result.time_to_best_s << ',' << r.result.elapsed_s << ','
+        << aco::to_string(r.result.reason) << '\n';
+}
+
+void write_summary_markdown(std::ostream& out, std::span<const ExperimentRun> runs,
+                            std::string_view local_search) {
+  out << "| instance | n | variant | local search | threads | runs | best | mean | worst | "
+         "mean excess % | hit optimum | mean time to best (s) |\n"
+      << "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::vector<bool> done(runs.size(), false);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (done[i]) continue;
+    std::vector<const ExperimentRun*> group;
+    for (std::size_t j = i; j < runs.size(); ++j)
+      if (!done[j] && runs[j].instance == runs[i].instance && runs[j].variant == runs[i].variant &&
+          runs[j].threads == runs[i].threads) {
+        group.push_back(&runs[j]);
+        done[j] = true;
+      }
+    double best = INFINITY, worst = 0.0, sum = 0.0, sum_excess = 0.0, sum_ttb = 0.0;
+    int hits = 0;
+    for (const ExperimentRun* r : group) {
+      best = std::min(best, r->length);
+      worst = std::max(worst, r->length);
+      sum += r->length;
+      sum_excess += r->excess_percent();
+      sum_ttb += r->result.time_to_best_s;
+      hits += r->hit_optimum() ? 1 : 0;
+    }
+    const auto count = static_cast<double>(group.size());
+    const ExperimentRun& r = *group.front();
+    out << "| " << r.instance << " | " << r.cities << " | " << aco::to_string(r.variant) << " | "
+        << local_search << " | " << r.threads << " | " << group.size() << " | " << std::fixed
+        << std::setprecision(0) << best << " | " << std::setprecision(1) << sum / count << " | "
+        << std::setprecision(0) << worst << " | ";
+    if (r.optimum) {
+      out << std::setprecision(3) << sum_excess / count << " | " << hits << "/" << group.size();
+    } else {
+      out << "- | -";
+    }
+    out << " | " << std::setprecision(2) << sum_ttb / count << " |\n";
+  }
+}
+
+}  // namespace antslam::tsp
