@@ -28,6 +28,7 @@
 #include "clique/exact.hpp"
 #include "slamgraph/ceres_baseline.hpp"
 #include "slamgraph/chain.hpp"
+#include "slamgraph/consistency.hpp"
 #include "slamgraph/g2o.hpp"
 
 namespace antslam::slam {
@@ -94,6 +95,13 @@ struct RobustResult {
   double optimize_s = 0.0;                 ///< Ceres solves (all of them)
   double total_s = 0.0;                    ///< the whole call
 };
+
+/// PCM's selection: a maximum clique of the consistency graph, by branch and bound (pcm_exact) or
+/// by the ants (pcm_aco), with the clique settings, backend and threads of `settings`; what
+/// solve_robust's PCM methods run, for a pose graph or a fragment set alike. Throws
+/// std::invalid_argument for another method or invalid settings.
+CliqueReport maximum_consistent_set(const ConsistencyGraph& consistency, RobustMethod method,
+                                    const RobustSettings& settings);
 
 /// Throws std::runtime_error "source: ..." for a graph whose chain is broken and
 /// std::invalid_argument for invalid settings.
