@@ -13,13 +13,18 @@ kind, one line per method.
 """
 import os
 
-from experiment_common import (DATA, antslam, check_program, header, load_average, markdown_table,
-                               parser, plt, progress, read_csv, read_json, save_figure, stats,
-                               write_csv)
+from experiment_common import (DATA, antslam, check_program, count_option, header,
+                               integer_at_least, load_average, markdown_table, parser, plt,
+                               progress, read_csv, read_json, save_csv, save_figure, save_table,
+                               stats)
 
 METHODS = ["ls", "cauchy", "dcs", "gnc", "pcm-exact", "pcm-aco"]
 KINDS = ["random", "local", "random-group", "local-group"]
 GROUND_TRUTH = {"manhattan3500": "manhattan3500.gt.dat", "ring": "ring.gt.g2o"}
+FULL = {"graphs": ["intel", "mit", "manhattan3500", "ring"], "counts": [0, 10, 100, 500, 1000],
+        "kinds": KINDS}
+# --quick: every method and both sorts of kind on the small ring graph
+QUICK = {"graphs": ["ring"], "counts": [0, 10], "kinds": ["random", "local-group"]}
 COLUMNS = ["graph", "kind", "count", "seed", "method", "closures", "accepted", "false_accepted",
            "precision", "recall", "ate_ls_m", "ate_gt_m", "time_s", "consistency_s", "clique_s",
            "optimize_s", "clique_size", "clique_optimal", "clique_bound", "load"]
@@ -27,16 +32,23 @@ COLUMNS = ["graph", "kind", "count", "seed", "method", "closures", "accepted", "
 
 def options():
     p = parser(__doc__, "robust")
-    p.add_argument("--graphs", nargs="+", default=["intel", "mit", "manhattan3500", "ring"])
-    p.add_argument("--counts", nargs="+", type=int, default=[0, 10, 100, 500, 1000])
-    p.add_argument("--kinds", nargs="+", default=KINDS)
-    p.add_argument("--methods", nargs="+", default=METHODS)
-    p.add_argument("--seeds", type=int, default=10, help="seeds 1..N per count and kind")
-    p.add_argument("--threads", type=int, default=2, help="threads of the consistency and ants")
+    p.add_argument("--graphs", nargs="+", help=f"pose graphs in data/posegraphs ({FULL['graphs']})")
+    p.add_argument("--counts", nargs="+", type=integer_at_least(0),
+                   help=f"false closures per graph ({FULL['counts']})")
+    p.add_argument("--kinds", nargs="+", choices=KINDS, help=f"kinds of false closure ({KINDS})")
+    p.add_argument("--methods", nargs="+", choices=METHODS, default=METHODS,
+                   help=f"back ends ({METHODS})")
+    count_option(p, "--seeds", "seeds 1..N per count and kind", 10, 1)
+    count_option(p, "--threads", "threads of the consistency and the ants", 2, 2)
     p.add_argument("--resume", action="store_true", help="keep the runs already in OUT/runs")
     args = p.parse_args()
-    if args.quick:
-        args.graphs, args.counts, args.seeds = ["ring", "intel"], [0, 10, 100], 1
+    defaults = QUICK if args.quick else FULL
+    for name, value in defaults.items():
+        if getattr(args, name) is None:
+            setattr(args, name, value)
+    for graph in args.graphs:
+        if not os.path.exists(os.path.join(DATA, "posegraphs", graph + ".g2o")):
+            p.error(f"--graphs: unknown {graph} (none of data/posegraphs/*.g2o)")
     return args
 
 
@@ -100,14 +112,15 @@ def summarize(args, rows):
         table.append([graph, kind, count, method, len(rs), fmt(cell["precision"]),
                       fmt(cell["recall"]), fmt(cell["ate_ls_m"]), fmt(cell["ate_gt_m"]),
                       fmt(cell["time_s"], 2), fmt(cell["clique_size"], 1)])
-    with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(header(args, "experiments/scripts/robust_closures.py"))
-        f.write("Means over the seeds; precision and recall of the accepted loop closures, ATE "
-                "(m, rigid alignment) against the outlier-free least-squares solution (ls) and the "
-                "ground truth (gt), wall-clock seconds of the whole call.\n\n")
-        f.write(markdown_table(["graph", "kind", "false", "method", "seeds", "precision",
-                                "recall", "ATE ls", "ATE gt", "time s", "clique"], table))
-        f.write("\n" + clique_table(rows))
+    text = (header(args, "experiments/scripts/robust_closures.py") +
+            "Means over the seeds; precision and recall of the accepted loop closures, ATE "
+            "(m, rigid alignment) against the outlier-free least-squares solution (ls) and the "
+            "ground truth (gt), wall-clock seconds of the whole call.\n\n" +
+            markdown_table(["graph", "kind", "false", "method", "seeds", "precision", "recall",
+                            "ATE ls", "ATE gt", "time s", "clique"], table) +
+            "\n" + clique_table(rows))
+    save_table(args, text)
+    print(text)
 
 
 def clique_table(rows):
@@ -197,7 +210,7 @@ def main():
                     progress(f"seed {seed}: {graph}, {count} {kind}")
                     rows += run_one(args, graph, kind if count else "random", count, seed,
                                     references[graph], truth)
-        write_csv(os.path.join(args.out, "robust.csv"), COLUMNS, rows)
+        save_csv(args, "robust", COLUMNS, rows)
     rows = read_csv(os.path.join(args.out, "robust.csv"))
     summarize(args, rows)
     plot(args, rows)
