@@ -159,10 +159,16 @@ FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSetting
   FragmentSet set;
   set.name = source;
   set.fragments.resize(n);
-  const auto oriented = [](const PoseGraphEdge& e, std::size_t a) {
-    const Eigen::Matrix3d cov = symmetric_inverse(e.information);
-    if (e.from == a) return Gaussian2(e.measurement, cov);
-    return Gaussian2(e.measurement.inverse(), inverse_covariance(e.measurement, cov));
+  const auto oriented = [&source](const PoseGraphEdge& e, std::size_t a) {
+    try {
+      const Eigen::Matrix3d cov = symmetric_inverse(e.information);
+      if (e.from == a) return Gaussian2(e.measurement, cov);
+      return Gaussian2(e.measurement.inverse(), inverse_covariance(e.measurement, cov));
+    } catch (const std::invalid_argument& e_problem) {
+      throw std::invalid_argument(source + ": EDGE_SE2 " + std::to_string(e.from) + " " +
+                                  std::to_string(e.to) + ": as a Gaussian from vertex " +
+                                  std::to_string(a) + ", " + e_problem.what());
+    }
   };
   for (const PoseGraphEdge& e : graph.edges) {
     const std::size_t a = std::min(e.from, e.to), b = std::max(e.from, e.to);
