@@ -148,7 +148,8 @@ void run(const TspCommand& c) {
   if (!termination.bounded()) {
     termination.time_limit_s = 10.0;
     if (!c.quiet)
-      std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
+      std::cout
+          << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
   }
   if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
 
