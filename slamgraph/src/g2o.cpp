@@ -192,6 +192,11 @@ FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSetting
   }
   if (set.closures.empty())
     throw std::invalid_argument(source + ": the pose graph has no loop-closure edge");
+  try {
+    validate(set);  // e.g. an edge's measurement beyond kMaxCoordinate, now a fragment's exit
+  } catch (const std::invalid_argument& problem) {
+    throw std::invalid_argument(source + ": " + problem.what());
+  }
   return set;
 }
 
