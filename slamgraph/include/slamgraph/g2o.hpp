@@ -49,7 +49,8 @@ struct G2oImportSettings {
   std::uint64_t seed = 1;    ///< seeds the samples
 };
 
-/// Throws std::invalid_argument naming `source` if some vertex i >= 1 has no edge to i - 1.
+/// Returns a valid set (validate()). Throws std::invalid_argument naming `source` if some vertex
+/// i >= 1 has no edge to i - 1, if an edge gives no Gaussian, or if the set is not valid.
 FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSettings& settings,
                                   const std::string& source);
 
