@@ -58,8 +58,8 @@ fi
 # Each harness from a fresh corpus (its seeds only) with a fixed seed, so a run is repeatable;
 # the run counts give 10-20 s a harness on a loaded 2-core machine. Findings are kept in
 # build-fuzz/findings/ (docs/fuzzing.md says how to replay one).
-fuzz_runs=(tsplib:60000 tour:250000 carmen:80000 g2o:150000 fragment_set:20000 tum:250000
-           relations:250000)
+fuzz_runs=(tsplib:100000 tour:400000 carmen:120000 g2o:200000 fragment_set:30000 tum:400000
+           relations:400000)
 fuzz_dir="$build_dir/tests/fuzz"
 failed=()
 rm -rf "$build_dir/findings" && mkdir -p "$build_dir/findings"
