@@ -80,11 +80,12 @@ void run_random(const FragmentSet& set, const OptimizeSettings& s, detail::Recor
   const SlamProblem problem(set);
   const std::size_t paths =
       s.aco.ants > 0 ? s.aco.ants : aco::default_ants(aco::Variant::hybrid, 0, false, false);
-  const SearchResult r =
-      random_search(problem, s.iterations, paths, s.seed, s.time_limit_s,
-                    [&](std::uint64_t round, std::uint64_t evaluations, double weight) {
-                      recorder.improve(round, evaluations, weight);
-                    });
+  const SearchResult r = random_search(
+      problem, s.iterations, paths, s.seed, s.time_limit_s,
+      [&](std::uint64_t round, std::uint64_t evaluations, double weight) {
+        recorder.improve(round, evaluations, weight);
+      },
+      s.stop);
   result.choice = r.choice;
   result.evaluations = r.evaluations;
   result.iterations = r.evaluations / paths;
@@ -124,6 +125,12 @@ bool is_discrete(Method m) {
 
 std::optional<aco::Variant> aco_variant(Method m) { return info(m).variant; }
 
+RefineSettings refine_settings(const OptimizeSettings& settings) {
+  RefineSettings refine = settings.refine;
+  refine.stop = settings.stop;
+  return refine;
+}
+
 OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings,
                         const OptimizeObserver& observer) {
   validate(set);
@@ -135,7 +142,7 @@ OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings
       settings.initial.empty() ? mean_alignments(set) : settings.initial;
   switch (settings.method) {
     case Method::nlopt: {
-      const RefineResult r = Refiner(set, settings.refine).refine(start);
+      const RefineResult r = Refiner(set, refine_settings(settings)).refine(start);
       result.alignments = r.alignments;
       result.evaluations = static_cast<std::uint64_t>(r.evaluations);
       break;

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
+#include <stop_token>
 #include <vector>
 
 #include "aco/synthetic_layered.hpp"
@@ -141,6 +143,31 @@ TEST(Termination, StopsOnTheTimeBudget) {
   EXPECT_EQ(r.reason, StopReason::time);
   EXPECT_GE(r.elapsed_s, 0.05);
   EXPECT_LE(r.time_to_best_s, r.elapsed_s);
+}
+
+// A stop request (a user's Ctrl-C) ends the run after the iteration in which it came, and
+// expires the token that local searches poll; the run up to there is the uninterrupted run's.
+TEST(Termination, AStopRequestEndsTheRunAfterItsIteration) {
+  const SyntheticLayeredProblem problem(6, 5, 2);
+  Parameters p;
+  p.variant = Variant::mmas;
+  std::stop_source source;
+  std::vector<double> interrupted_bests;
+  const RunResult r = solve(problem, p, {.max_iterations = 1000, .stop = source.get_token()},
+                            AnyBackend{}, NoLocalSearch{}, [&](const IterationReport& report) {
+                              interrupted_bests.push_back(report.global_best);
+                              if (report.iteration == 7) source.request_stop();
+                            });
+  EXPECT_EQ(r.reason, StopReason::interrupted);
+  EXPECT_EQ(r.iterations, 7U);
+  std::vector<double> bests;
+  solve(problem, p, {.max_iterations = 7}, AnyBackend{}, NoLocalSearch{},
+        [&](const IterationReport& report) { bests.push_back(report.global_best); });
+  EXPECT_EQ(interrupted_bests, bests);
+  constexpr auto kNever = StopToken::Clock::time_point::max();
+  constexpr double kNoCpuLimit = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(StopToken(kNever, kNoCpuLimit, source.get_token()).expired());
+  EXPECT_FALSE(StopToken(kNever, kNoCpuLimit, std::stop_source().get_token()).expired());
 }
 
 TEST(Termination, RejectsAnUnboundedRun) {
