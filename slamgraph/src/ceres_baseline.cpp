@@ -2,64 +2,11 @@
 
 #include <ceres/ceres.h>
 
-#include <cmath>
-#include <memory>
-#include <numbers>
 #include <stdexcept>
 
+#include "ceres_residual.hpp"
+
 namespace antslam::slam {
-
-namespace {
-
-/// U (F_a^-1 F_b A - H): the whitened residual of one alignment (A = identity, a = i - 1,
-/// b = i) or one closure.
-class RelativePoseError {
- public:
-  RelativePoseError(const Pose2& anchor, const Gaussian2& gaussian)
-      : anchor_(anchor), mean_(gaussian.mean()), sqrt_information_(gaussian.information_factor()) {}
-
-  template <class T>
-  bool operator()(const T* a, const T* b, T* residual) const {
-    using std::cos, std::floor, std::sin;
-    const T cb = cos(b[2]), sb = sin(b[2]);
-    const T gx = b[0] + cb * anchor_.x - sb * anchor_.y;
-    const T gy = b[1] + sb * anchor_.x + cb * anchor_.y;
-    const T ca = cos(a[2]), sa = sin(a[2]);
-    const T dx = gx - a[0], dy = gy - a[1];
-    const T angle = b[2] + anchor_.theta - a[2] - mean_.theta;
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
-    Eigen::Matrix<T, 3, 1> r;
-    r << ca * dx + sa * dy - mean_.x, -sa * dx + ca * dy - mean_.y,
-        angle - kTwoPi * floor((angle + std::numbers::pi) / kTwoPi);
-    Eigen::Map<Eigen::Matrix<T, 3, 1>> whitened(residual);
-    whitened = sqrt_information_.cast<T>() * r;
-    return true;
-  }
-
-  static ceres::CostFunction* create(const Pose2& anchor, const Gaussian2& gaussian) {
-    return new ceres::AutoDiffCostFunction<RelativePoseError, 3, 3, 3>(
-        new RelativePoseError(anchor, gaussian));
-  }
-
- private:
-  Pose2 anchor_;
-  Pose2 mean_;
-  Eigen::Matrix3d sqrt_information_;  // upper Cholesky factor U of Omega, U^T U = Omega
-};
-
-/// rho(s) = 2 (1 - exp(-s/2)): Ceres' 1/2 rho(|U r|^2) is the term 1 - N(mu, Sigma)(.) of
-/// eq. (10).
-class WelschLoss final : public ceres::LossFunction {
- public:
-  void Evaluate(double s, double rho[3]) const override {
-    const double e = std::exp(-0.5 * s);
-    rho[0] = 2.0 * (1.0 - e);
-    rho[1] = e;
-    rho[2] = -0.5 * e;
-  }
-};
-
-}  // namespace
 
 CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> initial, bool robust,
                                 const CeresSettings& settings) {
@@ -74,14 +21,21 @@ CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> i
 
   ceres::Problem problem;
   const auto add = [&](std::size_t a, std::size_t b, const Pose2& anchor, const Gaussian2& g) {
-    problem.AddResidualBlock(RelativePoseError::create(anchor, g),
-                             robust ? new WelschLoss : nullptr, poses[a].data(), poses[b].data());
+    problem.AddResidualBlock(
+        detail::RelativePoseError::create(anchor, g.mean(), g.information_factor()),
+        robust ? new detail::WelschLoss : nullptr, poses[a].data(), poses[b].data());
   };
   for (std::size_t i = 1; i < set.fragments.size(); ++i)
     add(i - 1, i, Pose2{}, *set.fragments[i].alignment);
   for (const LoopClosure& c : set.closures) add(c.from, c.to, c.anchor, c.hypothesis);
   problem.SetParameterBlockConstant(poses[0].data());
+  return detail::solve(problem, poses, settings);
+}
 
+namespace detail {
+
+CeresResult solve(ceres::Problem& problem, std::vector<Eigen::Vector3d>& poses,
+                  const CeresSettings& settings) {
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   options.max_num_iterations = settings.max_iterations;
@@ -101,5 +55,7 @@ CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> i
   result.converged = summary.termination_type == ceres::CONVERGENCE;
   return result;
 }
+
+}  // namespace detail
 
 }  // namespace antslam::slam

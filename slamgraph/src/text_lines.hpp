@@ -3,6 +3,7 @@
 // "source:line: problem" for anything malformed.
 
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +18,9 @@ namespace antslam::slam::detail {
 
 /// Whole-token number, accepting nan/inf so that they can be reported as non-finite.
 bool parse_number(const std::string& token, double& value);
+
+/// Whole-token non-negative integer (an id or an index).
+bool parse_index(const std::string& token, std::uint64_t& value);
 
 /// Calls f(fields, line) for every line that is neither blank nor a '#' comment; throws
 /// "source: read error" if the stream fails.
