@@ -5,6 +5,7 @@
 
 #include "cli/atomic_file.hpp"
 #include "commands.hpp"
+#include "output_options.hpp"
 #include "tsp/generator.hpp"
 #include "tsp/tsplib.hpp"
 #include "validators.hpp"
@@ -35,8 +36,9 @@ void add_tsp_generate_command(CLI::App& app) {
   sub->add_option("--side", c->side, "coordinates are integers in [0, side]")
       ->check(finite_in(1.0, 1.0e9))
       ->capture_default_str();
-  sub->add_option("--out", c->out, "TSPLIB file to write")->required();
+  add_output_option(*sub, c->out, "TSPLIB file to write (required)", {"--out"});
   sub->callback([c] {
+    require_output(!c->out.empty(), "--output");
     const tsp::Instance instance = tsp::random_uniform_instance(c->cities, c->seed, c->side);
     write_atomically(c->out, [&](std::ostream& out) { tsp::write_instance(out, instance); });
     std::cout << "wrote " << c->out.string() << " (" << instance.name() << ", " << instance.size()
