@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <stop_token>
+#include <string>
 #include <vector>
 
 #include "aco/synthetic_layered.hpp"
@@ -168,6 +170,29 @@ TEST(Termination, AStopRequestEndsTheRunAfterItsIteration) {
   constexpr double kNoCpuLimit = std::numeric_limits<double>::infinity();
   EXPECT_TRUE(StopToken(kNever, kNoCpuLimit, source.get_token()).expired());
   EXPECT_FALSE(StopToken(kNever, kNoCpuLimit, std::stop_source().get_token()).expired());
+}
+
+// Nonsense parameters are refused with one line naming the field, before any ant runs.
+TEST(Parameters, NonsenseIsRefusedByName) {
+  const SyntheticLayeredProblem problem(3, 3, 1);
+  const auto error_of = [&](auto change) {
+    Parameters p;
+    change(p);
+    try {
+      solve(problem, p, {.max_iterations = 1});
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of([](Parameters& p) { p.rho = 1.5; }),
+            "aco: rho must be in [0, 1] (0: the variant's default)");
+  EXPECT_EQ(error_of([](Parameters& p) { p.alpha = std::nan(""); }),
+            "aco: alpha must be a finite number >= 0");
+  EXPECT_EQ(error_of([](Parameters& p) { p.p_best = 1.0; }), "aco: p_best must be in (0, 1)");
+  EXPECT_EQ(error_of([](Parameters& p) { p.tau_init = 2.0 * p.tau_max; }),
+            "aco: need 0 < tau_init <= tau_max, both finite");
+  EXPECT_EQ(error_of([](Parameters&) {}), "no error");
 }
 
 TEST(Termination, RejectsAnUnboundedRun) {
