@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "frontend/distance_field.hpp"
+
 namespace antslam::baselines {
 
 OccupancyGrid::OccupancyGrid(double resolution, std::size_t max_cells)
@@ -14,7 +16,7 @@ OccupancyGrid::OccupancyGrid(double resolution, std::size_t max_cells)
 }
 
 std::int64_t OccupancyGrid::cell(double coordinate) const {
-  return static_cast<std::int64_t>(std::floor(coordinate / resolution_));
+  return frontend::floor_index(coordinate / resolution_);
 }
 
 float OccupancyGrid::at(std::int64_t x, std::int64_t y) const {

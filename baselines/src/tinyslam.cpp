@@ -28,7 +28,8 @@ void validate(const TinySlamSettings& s) {
     throw std::invalid_argument("tinyslam: min_range must be in [0, max_range)");
   if (!(s.hole_width >= 0.0 && std::isfinite(s.hole_width)))
     throw std::invalid_argument("tinyslam: hole_width must be >= 0");
-  if (s.stop == 0) throw std::invalid_argument("tinyslam: stop must be >= 1");
+  if (s.stop == 0 || s.stop > kMaxStop)
+    throw std::invalid_argument("tinyslam: stop must be in [1, " + std::to_string(kMaxStop) + "]");
 }
 
 std::vector<Eigen::Vector2d> scan_points(const frontend::LaserScan& scan,

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "slamgraph/trajectory.hpp"
+
 namespace antslam::eval {
 
 namespace {
@@ -47,6 +49,16 @@ std::vector<Relation> read_relations(std::istream& in, const std::string& source
     const auto [t1, t2, dx, dy, dz, droll, dpitch, dyaw] = parse_fields(text, source, line);
     if (dz != 0.0 || droll != 0.0 || dpitch != 0.0)
       fail(source, line, "dz, droll and dpitch must be 0 in a 2D relation");
+    const auto check = [&](double value, const char* what, double limit, const char* unit) {
+      if (std::abs(value) <= limit) return;
+      std::ostringstream problem;
+      problem << what << " " << value << " " << unit << " is beyond " << limit << " " << unit;
+      fail(source, line, problem.str());
+    };
+    check(t1, "t1", slam::kMaxTimestamp, "s");
+    check(t2, "t2", slam::kMaxTimestamp, "s");
+    check(dx, "dx", slam::kMaxCoordinate, "m");
+    check(dy, "dy", slam::kMaxCoordinate, "m");
     relations.push_back({t1, t2, slam::Pose2{dx, dy, slam::wrap_angle(dyaw)}, line});
   }
   if (in.bad()) throw std::runtime_error(source + ": read error");
@@ -55,6 +67,9 @@ std::vector<Relation> read_relations(std::istream& in, const std::string& source
 }
 
 std::vector<Relation> read_relations_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(path.string() + ": is a directory, expected a relations file");
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   return read_relations(in, path.string());

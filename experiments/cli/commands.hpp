@@ -5,6 +5,9 @@
 
 namespace antslam::cli {
 
+/// The whole program: every subcommand below and the global --verbose flag.
+void add_commands(CLI::App& app);
+
 // void add_<name>_command(CLI::App& app);  -- one per subcommand, defined in <name>_command.cpp
 void add_eval_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);

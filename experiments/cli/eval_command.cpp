@@ -1,7 +1,8 @@
 // `antslam eval EST REF`: scores an estimated trajectory against a reference, both in TUM format
 // (docs/evaluation.md): ATE after rigid SE(2) alignment, RPE over a frame or distance step and,
-// with --relations, the relations metric of Kuemmerle et al. 2009. Table on stdout, JSON on
-// request.
+// with --relations, the relations metric of Kuemmerle et al. 2009; with --fragment-set, the
+// set's alignments and loop closures against the reference (precision and recall of the
+// closures). Table on stdout, JSON on request.
 
 #include <charconv>
 #include <cmath>
@@ -13,12 +14,17 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/alignment.hpp"
+#include "eval/fragment_set_check.hpp"
 #include "eval/relations.hpp"
 #include "eval/report.hpp"
+#include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -28,6 +34,7 @@ struct EvalOptions {
   std::filesystem::path estimate;      ///< TUM file
   std::filesystem::path reference;     ///< TUM file
   std::filesystem::path relations;     ///< Kuemmerle relations file; empty = none
+  std::filesystem::path fragment_set;  ///< fragment set to check; empty = none
   std::filesystem::path json;          ///< JSON result file; empty = none
   std::filesystem::path aligned;       ///< TUM file for the aligned estimate; empty = none
   eval::EvaluationSettings settings;   ///< tolerances (s), RPE step; align set from no_align
@@ -59,25 +66,50 @@ slam::Trajectory read_trajectory(const std::filesystem::path& path) {
 void run_eval(EvalOptions options) {
   options.settings.align = !options.no_align;
   if (options.rpe_distance) options.settings.rpe.metres = *options.rpe_distance;
+  OutputFiles outputs;
+  if (!options.aligned.empty()) outputs.add(options.aligned);
+  if (!options.json.empty()) outputs.add(options.json);
   const slam::Trajectory estimate = read_trajectory(options.estimate);
   const slam::Trajectory reference = read_trajectory(options.reference);
   std::vector<eval::Relation> relations;
   if (!options.relations.empty()) relations = eval::read_relations_file(options.relations);
 
-  const eval::Evaluation evaluation =
-      eval::evaluate(estimate, reference, options.settings, relations);
+  const eval::Evaluation evaluation = in_context_of(
+      {options.estimate, options.reference, options.relations},
+      [&] { return eval::evaluate(estimate, reference, options.settings, relations); });
 
-  eval::print_table(std::cout, evaluation);
+  std::optional<eval::FragmentSetCheck> check;
+  if (!options.fragment_set.empty()) {
+    eval::FragmentSetCheckSettings settings;
+    settings.max_dt = options.settings.max_dt;
+    check = eval::check_fragment_set(slam::read_fragment_set_file(options.fragment_set), reference,
+                                     settings);
+  }
   if (!options.aligned.empty()) {
     const slam::Trajectory aligned = eval::transformed(estimate, evaluation.ate.alignment);
-    write_atomically(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
+    outputs.write(options.aligned, [&](std::ostream& out) { slam::write_tum(out, aligned); });
   }
   if (!options.json.empty()) {
     nlohmann::json json = eval::to_json(evaluation);
     json["estimate"] = options.estimate.string();
     json["reference"] = options.reference.string();
     if (!options.relations.empty()) json["relations"]["file"] = options.relations.string();
-    write_atomically(options.json, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
+    if (check) {
+      json["fragment_set"] = eval::to_json(*check);
+      json["fragment_set"]["file"] = options.fragment_set.string();
+    }
+    outputs.write(options.json, json_text(json));
+  }
+  outputs.commit();
+  eval::print_table(std::cout, evaluation);
+  if (check) {
+    const auto percent = [](const std::optional<double>& v) {
+      return v ? std::to_string(static_cast<int>(std::lround(100.0 * *v))) + " %" : "-";
+    };
+    std::cout << "loop closures: " << check->correct_closures << " of " << check->checked_closures
+              << " correct (precision " << percent(check->precision()) << "), "
+              << check->revisits_closed << " of " << check->revisits
+              << " revisiting fragments closed (recall " << percent(check->recall()) << ")\n";
   }
 }
 
@@ -98,7 +130,7 @@ void add_eval_command(CLI::App& app) {
   auto* frames =
       cmd->add_option("--rpe-frames", options->settings.rpe.frames, "RPE step in associated poses")
           ->capture_default_str()
-          ->check(CLI::PositiveNumber);
+          ->check(count_in(1, 1'000'000'000));
   cmd->add_option("--rpe-distance", options->rpe_distance,
                   "RPE step as distance travelled along the reference, metres")
       ->check(finite_number(false))
@@ -109,6 +141,8 @@ void add_eval_command(CLI::App& app) {
                   "tolerance between relation and estimate timestamps, seconds")
       ->capture_default_str()
       ->check(finite_number(true));
+  cmd->add_option("--fragment-set", options->fragment_set,
+                  "fragment set (JSON) whose alignments and loop closures to check against REF");
   cmd->add_option("--json", options->json, "write the results as JSON to this file");
   cmd->add_option("--aligned-out", options->aligned,
                   "write the estimate moved by the ATE alignment to this TUM file");

@@ -9,7 +9,8 @@
 #include <filesystem>
 #include <memory>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/laser_log.hpp"
@@ -18,6 +19,7 @@
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -33,16 +35,24 @@ struct FragmentSetOptions {
 void run(FragmentSetOptions o) {
   resolve(o.frontend);
   frontend::validate(o.frontend.settings);  // before reading the log
-  const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.frontend.sensor.overrides());
+  OutputFiles outputs;
+  outputs.add(o.out);
+  if (!o.trajectory.empty()) outputs.add(o.trajectory);
+  const frontend::LaserLog log = read_laser_log(o.log, o.frontend.sensor);
+  if (!o.trajectory.empty()) frontend::require_time_order(log);
   Progress progress;
-  const frontend::FrontendResult result = run_frontend(log, o.frontend.settings, progress);
+  const frontend::FrontendResult result = in_context_of(o.log, [&] {
+    frontend::FrontendResult r = run_frontend(log, o.frontend.settings, progress);
+    slam::validate(r.fragment_set);  // e.g. no loop closure found: say so, write nothing
+    return r;
+  });
   progress.clear();
-  slam::validate(result.fragment_set);  // e.g. no loop closure found: say so, write nothing
-  write_atomically(o.out,
-                   [&](std::ostream& out) { slam::write_fragment_set(out, result.fragment_set); });
+  outputs.write(o.out,
+                [&](std::ostream& out) { slam::write_fragment_set(out, result.fragment_set); });
   if (!o.trajectory.empty())
-    write_atomically(o.trajectory,
-                     [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
+    outputs.write(o.trajectory,
+                  [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
+  outputs.commit();
   std::printf("%s: %zu scans, %zu fragments, %zu loop closures; wrote %s\n", o.log.string().c_str(),
               log.scans.size(), result.fragment_set.fragments.size(),
               result.fragment_set.closures.size(), o.out.string().c_str());
@@ -60,6 +70,7 @@ void add_fragment_set_command(CLI::App& app) {
   cmd->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
   add_output_option(*cmd, o.out, "fragment-set JSON to write (required)", {"--out"});
   cmd->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
+      ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_option("--trajectory", o.trajectory,
                   "also write the scan matcher's trajectory (TUM): the pre-solution baseline");

@@ -11,7 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/image.hpp"
@@ -22,6 +24,7 @@
 #include "output_options.hpp"
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -29,6 +32,9 @@ namespace {
 
 using nlohmann::json;
 namespace fe = antslam::frontend;
+
+/// Random sample sequences --average-samples may draw: each one renders every scan again.
+constexpr std::uint64_t kMaxAverageSamples = 10000;
 
 struct FrontendCommandOptions {
   std::filesystem::path log;
@@ -47,32 +53,38 @@ void run(FrontendCommandOptions c) {
   resolve(o);
   fe::validate(o.map);
   fe::validate(o.settings);
+  OutputFiles outputs;
+  const std::filesystem::path trajectory = outputs.add(c.out / "trajectory.tum");
+  const std::filesystem::path map_path = outputs.add(c.out / "map.png");
+  const std::filesystem::path samples_path = outputs.add(c.out / "map-samples.png");
+  const std::filesystem::path report_path = outputs.add(c.out / "report.json");
 
-  const fe::LaserLog log = fe::read_carmen_file(c.log, o.sensor.overrides());
+  const fe::LaserLog log = read_laser_log(c.log, o.sensor);
+  fe::require_time_order(log);
   const double read_seconds = seconds_since(start);
   Progress progress;
   const auto matching = std::chrono::steady_clock::now();
-  const fe::FrontendResult result = run_frontend(log, o.settings, progress);
+  const fe::FrontendResult result =
+      in_context_of(c.log, [&] { return run_frontend(log, o.settings, progress); });
   const double frontend_seconds = seconds_since(matching);
   progress.update("frontend: drawing the map", true);
 
   const auto drawing = std::chrono::steady_clock::now();
-  const fe::Image map =
-      fe::render_map(log, fe::map_layout(result), fe::scan_matcher_frames(result), o.map);
-  const std::string png = fe::encode_png(map);
-  std::string average_png;
+  const fe::Image map = in_context_of(c.log, [&] {
+    return fe::render_map(log, fe::map_layout(result), fe::scan_matcher_frames(result), o.map);
+  });
+  outputs.write(map_path, fe::encode_png(map));
   if (c.average_samples > 0 && result.fragments.size() > 1) {
     progress.update("frontend: averaging maps of random sample sequences", true);
-    average_png = fe::encode_png(fe::render_sample_average_map(
-        log, result, c.average_samples, o.settings.fragmentation.seed, o.map));
+    outputs.write(samples_path, fe::encode_png(in_context_of(c.log, [&] {
+                    return fe::render_sample_average_map(log, result, c.average_samples,
+                                                         o.settings.fragmentation.seed, o.map);
+                  })));
   }
   const double map_seconds = seconds_since(drawing);
   progress.clear();
 
-  write_atomically(c.out / "trajectory.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
-  write_atomically(c.out / "map.png", png);
-  if (!average_png.empty()) write_atomically(c.out / "map-samples.png", average_png);
+  outputs.write(trajectory, [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
   const json times = {
       {"read_s", read_seconds},
       {"scan_matching_s", result.stats.matching_seconds},
@@ -84,8 +96,8 @@ void run(FrontendCommandOptions c) {
   nlohmann::json report = fe::input_json(c.log.string(), log, o.settings, o.map);
   report.update(fe::result_json(result));
   report["times"] = times;
-  write_atomically(c.out / "report.json",
-                   [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  outputs.write(report_path, json_text(report));
+  outputs.commit();
 
   std::printf(
       "%s: %zu scans in %.2f s (%.0f scans/s), %zu fragments, %zu loop closures (%zu "
@@ -93,9 +105,8 @@ void run(FrontendCommandOptions c) {
       c.log.string().c_str(), log.scans.size(), frontend_seconds,
       static_cast<double>(log.scans.size()) / frontend_seconds, result.fragments.size(),
       result.fragment_set.closures.size(), result.attempts.size());
-  std::printf("wrote %s, %s (%zu x %zu), %s\n", (c.out / "trajectory.tum").string().c_str(),
-              (c.out / "map.png").string().c_str(), map.width(), map.height(),
-              (c.out / "report.json").string().c_str());
+  std::printf("wrote %s, %s (%zu x %zu), %s\n", trajectory.string().c_str(),
+              map_path.string().c_str(), map.width(), map.height(), report_path.string().c_str());
 }
 
 }  // namespace
@@ -110,12 +121,14 @@ void add_frontend_command(CLI::App& app) {
   sub->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
   add_out_dir_option(*sub, o.out, "output directory (required)");
   sub->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
+      ->check(non_negative_integer())
       ->capture_default_str();
   add_frontend_options(*sub, o.frontend);
   add_map_options(*sub, o.frontend);
   sub->add_option("--average-samples", o.average_samples,
                   "also write map-samples.png: the average map of this many random sample "
-                  "sequences (eqs. 7-8)");
+                  "sequences (eqs. 7-8)")
+      ->check(count_in(0, kMaxAverageSamples));
   sub->callback([options] {
     require_output(!options->out.empty(), "--out-dir");
     run(*options);

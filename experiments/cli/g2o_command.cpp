@@ -7,10 +7,13 @@
 #include <memory>
 #include <string>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/memory.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -24,17 +27,25 @@ struct G2oOptions {
 };
 
 void run(const G2oOptions& o) {
+  OutputFiles outputs;
+  outputs.add(o.output);
   const slam::PoseGraph graph = slam::read_g2o_file(o.input);
   if (slam::is_pose_graph_file(o.output)) {
-    write_atomically(o.output,
-                     [&](std::ostream& out) { slam::write_pose_graph(out, graph, o.output); });
+    outputs.write(o.output,
+                  [&](std::ostream& out) { slam::write_pose_graph(out, graph, o.output); });
+    outputs.commit();
     std::printf("wrote %s: %zu vertices%s, %zu edges\n", o.output.c_str(), graph.vertices.size(),
                 graph.vertices_from_file ? "" : " (composed along the edges)", graph.edges.size());
     return;
   }
-  slam::FragmentSet set = slam::fragment_set_from_g2o(graph, o.import, o.input);
+  require_memory("-m " + std::to_string(o.import.samples) + " (the samples)",
+                 slam::fragment_set_bytes(graph.vertices.size(), o.import.samples, 0));
+  slam::FragmentSet set =
+      in_context_of(o.input, [&] { return slam::fragment_set_from_g2o(graph, o.import, o.input); });
   set.reference = slam::reference_poses(set.fragments.size(), {}, o.reference);
-  write_atomically(o.output, [&](std::ostream& out) { slam::write_fragment_set(out, set); });
+  in_context_of(o.input, [&] { slam::validate(set); });
+  outputs.write(o.output, [&](std::ostream& out) { slam::write_fragment_set(out, set); });
+  outputs.commit();
   std::printf("wrote %s: %zu fragments (vertices), %zu alignments, %zu loop closures, M = %zu\n",
               o.output.c_str(), set.fragments.size(), set.layer_count(), set.closures.size(),
               o.import.samples);
@@ -53,8 +64,11 @@ void add_g2o_command(CLI::App& app) {
                   "in that format")
       ->required();
   cmd->add_option("-m,--samples", o->import.samples, "samples drawn per alignment (eq. 7)")
+      ->check(count_in(1, kMaxSamples))
       ->capture_default_str();
-  cmd->add_option("--seed", o->import.seed, "seed of the samples")->capture_default_str();
+  cmd->add_option("--seed", o->import.seed, "seed of the samples")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   cmd->add_option("--reference", o->reference,
                   "ground-truth poses stored with the set (.g2o, .graph, .tum or `x y theta` "
                   "lines)");

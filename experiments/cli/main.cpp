@@ -1,36 +1,32 @@
-// antslam: the command-line entry point. Errors end the program with one line on stderr and a
-// non-zero exit status.
+// antslam: the command-line entry point and its error boundary. Every failure ends the program
+// with one line "antslam: error: ..." on stderr and the exit status of its kind (cli/errors.hpp,
+// README "Exit status"); SIGINT and SIGTERM remove temporary files first (cli/interrupts.hpp).
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
 
+#include "cli/errors.hpp"
+#include "cli/interrupts.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
+  using antslam::cli::ExitStatus;
+  antslam::cli::handle_interrupts();
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
-  app.require_subcommand(1);
-  antslam::cli::add_eval_command(app);
-  antslam::cli::add_optimize_command(app);
-  antslam::cli::add_synth_command(app);
-  antslam::cli::add_g2o_command(app);
-  antslam::cli::add_frontend_command(app);
-  antslam::cli::add_map_command(app);
-  antslam::cli::add_tsp_command(app);
-  antslam::cli::add_tsp_experiment_command(app);
-  antslam::cli::add_tsp_generate_command(app);
-  antslam::cli::add_odometry_command(app);
-  antslam::cli::add_simulate_odometry_command(app);
-  antslam::cli::add_tinyslam_command(app);
-  antslam::cli::add_fragment_set_command(app);
+  antslam::cli::Failure failure;
   try {
+    antslam::cli::add_commands(app);
     app.parse(argc, argv);
+    return static_cast<int>(ExitStatus::ok);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "antslam: error: %s\n", e.what());
-    return 1;
+    failure = {antslam::cli::one_line(e.what()), ExitStatus::usage};
+  } catch (...) {
+    failure = antslam::cli::failure_of(std::current_exception());
   }
-  return 0;
+  std::fprintf(stderr, "antslam: error: %s\n", failure.message.c_str());
+  return static_cast<int>(failure.status);
 }

@@ -6,13 +6,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/image.hpp"
@@ -36,6 +39,9 @@ struct MapOptions {
   bool no_maps = false;
 };
 
+/// Closures are listed one a line up to this many; beyond, only those outside 2 sigma.
+constexpr std::size_t kListedClosures = 20;
+
 void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
   const slam::FragmentSet& set = r.frontend.fragment_set;
   const mapping::MappingResult& mr = r.mapping;
@@ -47,20 +53,41 @@ void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
   std::printf("%s, %zu trials (%.2f s): weight (eq. 10) %.4f -> %.4f, chi2 %.6g -> %.6g\n",
               o.optimizer.method.c_str(), mr.trials.size(), mr.seconds, mr.scan_matcher.weight,
               best.scores.weight, mr.scan_matcher.chi2, best.scores.chi2);
-  std::size_t within = 0;
-  std::printf("loop closures (Mahalanobis distance of the residual, scan matcher -> optimized):\n");
+  if (mr.closing) {
+    std::string distrusted;
+    for (std::size_t c = 0; c < set.closures.size(); ++c)
+      if (!mr.closing->trusted[c])
+        distrusted +=
+            " " + std::to_string(set.closures[c].from) + "-" + std::to_string(set.closures[c].to);
+    const auto trusted = static_cast<std::size_t>(
+        std::count(mr.closing->trusted.begin(), mr.closing->trusted.end(), true));
+    std::printf(
+        "loops closed by least squares with %zu of %zu closures (%s%s): weight %.4f, "
+        "chi2 %.6g\n",
+        trusted, set.closures.size(),
+        distrusted.empty() ? "all consistent" : "distrusted:", distrusted.c_str(), mr.scores.weight,
+        mr.scores.chi2);
+  }
+  std::printf(
+      "loop closures (Mahalanobis distance of the residual, scan matcher -> optimized)%s:\n",
+      mr.after.size() > kListedClosures ? ", those outside 2 sigma" : "");
   for (std::size_t c = 0; c < mr.after.size(); ++c) {
     const bool ok = mr.after[c].mahalanobis <= mapping::kClosureSigmas;
-    within += ok ? 1 : 0;
+    if (ok && mr.after.size() > kListedClosures) continue;
     std::printf("  %3zu-%-3zu %9.2f -> %6.2f  %s\n", mr.after[c].from, mr.after[c].to,
                 mr.before[c].mahalanobis, mr.after[c].mahalanobis,
                 ok ? "within 2 sigma" : "OUTSIDE 2 sigma");
   }
-  std::printf("  %zu of %zu closures within their 2-sigma ellipse\n", within, mr.after.size());
+  std::printf("  %zu of %zu closures within their 2-sigma ellipse\n",
+              mr.after.size() - r.verdict.outside.size(), mr.after.size());
   if (r.evaluation)
     std::printf("ATE RMSE vs %s: scan matcher %.4f m, optimized %.4f m (%zu poses)\n",
                 r.evaluation->reference.c_str(), r.evaluation->scan_matcher.ate.translation_m.rmse,
                 r.evaluation->optimized.ate.translation_m.rmse, r.evaluation->optimized.associated);
+  for (const std::size_t c : r.verdict.outside)
+    std::printf("warning: loop closure %zu-%zu is %.2f sigma from its hypothesis in the map\n",
+                mr.after[c].from, mr.after[c].to, mr.after[c].mahalanobis);
+  for (const std::string& w : r.warnings) std::printf("warning: %s\n", w.c_str());
 }
 
 void run(MapOptions o) {
@@ -74,38 +101,48 @@ void run(MapOptions o) {
   s.frontend.fragmentation.seed = s.mapping.optimize.seed;
   s.map = o.frontend.map;
   s.draw_maps = !o.no_maps;
+  mapping::validate(s);
+
+  // Every output is declared (and checked) now; maps this run does not draw are removed from
+  // --out when the outputs are moved into place, so that the directory holds one run.
+  OutputFiles outputs;
+  const std::filesystem::path set_path = outputs.add(o.out / "fragment-set.json");
+  const std::filesystem::path trajectory = outputs.add(o.out / "trajectory.tum");
+  const std::filesystem::path scan_matcher = outputs.add(o.out / "trajectory-scan-matcher.tum");
+  const std::vector<std::filesystem::path> maps = {outputs.add(o.out / "map-scan-matcher.png"),
+                                                   outputs.add(o.out / "map-optimized.png"),
+                                                   outputs.add(o.out / "map-average.png")};
+  const std::filesystem::path report = outputs.add(o.out / "report.json");
 
   Progress progress;
-  const mapping::PipelineResult r = mapping::run_pipeline(
-      o.log, s, o.reference,
-      [&](std::string_view stage, bool final) { progress.update(std::string(stage), final); });
+  const mapping::PipelineResult r = in_context_of({o.log, o.reference}, [&] {
+    return mapping::run_pipeline(o.log, s, o.reference, [&](std::string_view stage, bool final) {
+      progress.update(std::string(stage), final);
+    });
+  });
   progress.clear();
 
-  const std::filesystem::path set_path = o.out / "fragment-set.json";
-  const std::filesystem::path trajectory = o.out / "trajectory.tum";
-  const std::filesystem::path scan_matcher = o.out / "trajectory-scan-matcher.tum";
-  const std::filesystem::path report = o.out / "report.json";
-  write_atomically(
-      set_path, [&](std::ostream& out) { slam::write_fragment_set(out, r.frontend.fragment_set); });
-  write_atomically(trajectory,
-                   [&](std::ostream& out) { slam::write_tum(out, r.mapping.corrected); });
-  write_atomically(scan_matcher,
-                   [&](std::ostream& out) { slam::write_tum(out, r.frontend.trajectory); });
-  std::vector<std::filesystem::path> maps;
+  // The maps last: the trajectory, fragment set and report are there whatever happens to them.
+  outputs.write(set_path,
+                [&](std::ostream& out) { slam::write_fragment_set(out, r.frontend.fragment_set); });
+  outputs.write(trajectory, [&](std::ostream& out) { slam::write_tum(out, r.mapping.corrected); });
+  outputs.write(scan_matcher,
+                [&](std::ostream& out) { slam::write_tum(out, r.frontend.trajectory); });
+  outputs.write(report, json_text(mapping::report_json(o.log.string(), s, r)));
   if (r.maps) {
-    maps = {o.out / "map-scan-matcher.png", o.out / "map-optimized.png", o.out / "map-average.png"};
-    write_atomically(maps[0], frontend::encode_png(r.maps->scan_matcher));
-    write_atomically(maps[1], frontend::encode_png(r.maps->optimized));
-    write_atomically(maps[2], frontend::encode_png(r.maps->average));
+    outputs.write(maps[0], frontend::encode_png(r.maps->scan_matcher));
+    outputs.write(maps[1], frontend::encode_png(r.maps->optimized));
+    outputs.write(maps[2], frontend::encode_png(r.maps->average));
   }
-  write_atomically(report, [&](std::ostream& out) {
-    out << mapping::report_json(o.log.string(), s, r).dump(2) << '\n';
-  });
+  outputs.commit();
 
   print_summary(o, r);
   std::printf("wrote %s, %s, %s, %s\n", set_path.string().c_str(), trajectory.string().c_str(),
               scan_matcher.string().c_str(), report.string().c_str());
-  for (const std::filesystem::path& p : maps) std::printf("map: %s\n", p.string().c_str());
+  if (r.maps)
+    for (const std::filesystem::path& p : maps)
+      std::printf("map: %s (%.3f m per pixel)\n", p.string().c_str(), r.maps->resolution);
+  std::printf("%s\n", r.verdict.line.c_str());
 }
 
 }  // namespace
@@ -123,15 +160,19 @@ void add_map_command(CLI::App& app) {
   add_out_dir_option(*sub, o.out, "output directory (required)");
   sub->add_option("--trials", o.mapping.trials,
                   "optimizer trials; the lowest weight is the map, all of them the average map")
-      ->check(non_negative_integer())
+      ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
   sub->add_option("--threads", o.mapping.threads,
                   "threads the trials run on (0 = all cores); results do not depend on it")
-      ->check(non_negative_integer())
+      ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   sub->add_option("--reference", o.reference,
                   "reference trajectory (TUM) to evaluate both trajectories against");
   sub->add_flag("--no-maps", o.no_maps, "do not draw the maps");
+  sub->add_flag(
+      "--no-closing", [&o](std::int64_t) { o.mapping.closing.enabled = false; },
+      "keep the best trial's map: do not close the loops with the trusted closures by least "
+      "squares afterwards");
   add_optimizer_options(*sub, o.optimizer);
   add_frontend_options(*sub, o.frontend);
   add_map_options(*sub, o.frontend);

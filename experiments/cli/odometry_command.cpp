@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "cli/atomic_file.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "frontend/laser_log.hpp"
 #include "output_options.hpp"
@@ -24,10 +24,14 @@ struct OdometryOptions {
 };
 
 void run(const OdometryOptions& o) {
+  OutputFiles outputs;
+  outputs.add(o.out);
   const frontend::LaserLog log = frontend::read_carmen_file(o.log);
+  frontend::require_time_order(log);
   slam::Trajectory odometry;
   for (const frontend::LaserScan& scan : log.scans) odometry.push_back({scan.stamp, scan.odometry});
-  write_atomically(o.out, [&](std::ostream& out) { slam::write_tum(out, odometry); });
+  outputs.write(o.out, [&](std::ostream& out) { slam::write_tum(out, odometry); });
+  outputs.commit();
   std::printf("%s: %zu scans, odometry path %.1f m; wrote %s\n", o.log.string().c_str(),
               odometry.size(), slam::path_length(odometry), o.out.string().c_str());
 }

@@ -13,7 +13,9 @@
 #include <thread>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/memory.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "eval/evaluation.hpp"
@@ -23,6 +25,7 @@
 #include "slamgraph/graph_optimize.hpp"
 #include "slamgraph/result_io.hpp"
 #include "slamgraph/trials.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -47,6 +50,7 @@ struct Subject {
   std::optional<slam::PoseGraph> graph;
   std::vector<slam::Pose2> reference;  ///< per fragment or vertex; empty if none
 
+  std::size_t poses() const { return graph ? graph->vertices.size() : set->fragments.size(); }
   std::string size_text() const {
     if (graph)
       return "N = " + std::to_string(graph->vertices.size()) + " vertices, " +
@@ -72,15 +76,19 @@ struct Subject {
   }
 };
 
+/// The input as it is (without its reference): a fragment-set JSON, or a pose graph whose
+/// fragment chain, if the method needs one, is refused up front when its -m samples would not
+/// fit in memory.
 Subject read_subject(const OptimizeOptions& o) {
   Subject subject;
-  if (slam::is_pose_graph_file(o.input)) {
-    subject.graph = slam::read_g2o_file(o.input);
-    subject.reference = slam::reference_poses(subject.graph->vertices.size(), {}, o.reference);
-  } else {
+  if (!slam::is_pose_graph_file(o.input)) {
     subject.set = slam::read_fragment_set_file(o.input);
-    subject.reference = slam::reference_frames(*subject.set, o.reference);
+    return subject;
   }
+  subject.graph = slam::read_g2o_file(o.input);
+  if (slam::needs_fragment_chain(o.s.method))
+    require_memory("-m " + std::to_string(o.import.samples) + " (the samples)",
+                   slam::fragment_set_bytes(subject.graph->vertices.size(), o.import.samples, 0));
   return subject;
 }
 
@@ -123,38 +131,51 @@ void print_summary(const slam::StudyResult& r, const Subject& subject, const Opt
 void run(const OptimizeOptions& options) {
   OptimizeOptions o = options;
   o.s = optimize_settings(o.optimizer);
-  if (o.trials == 0) throw std::invalid_argument("--trials must be >= 1");
+  slam::validate(o.s);
   if (o.threads == 0) o.threads = std::max(1U, std::thread::hardware_concurrency());
-  const Subject subject = read_subject(o);
-  const std::vector<slam::OptimizeResult> trials = run_study(subject, o);
-  slam::StudyResult r = slam::summarize(o.input, o.s, trials);
-  if (!subject.reference.empty()) r.error = eval::frames_error(r.best.frames, subject.reference);
-  print_summary(r, subject, o);
-
   const std::string prefix =
       o.output.empty() ? std::filesystem::path(o.input).stem().string() + "." + o.optimizer.method
                        : o.output;
-  write_atomically(prefix + ".json", [&](std::ostream& out) { slam::write_result(out, r); });
-  write_atomically(prefix + ".trials.csv",
-                   [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
-  write_atomically(prefix + ".convergence.csv",
-                   [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
-  write_atomically(prefix + ".times.json",
-                   [&](std::ostream& out) { slam::write_times_json(out, trials); });
-  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv, %s.times.json\n", prefix.c_str(),
-              prefix.c_str(), prefix.c_str(), prefix.c_str());
-  if (!o.g2o_out.empty()) {
-    write_atomically(o.g2o_out, [&](std::ostream& out) {
+  OutputFiles outputs;
+  const std::filesystem::path result_json = outputs.add(prefix + ".json");
+  const std::filesystem::path trials_csv = outputs.add(prefix + ".trials.csv");
+  const std::filesystem::path convergence_csv = outputs.add(prefix + ".convergence.csv");
+  const std::filesystem::path times_json = outputs.add(prefix + ".times.json");
+  if (!o.g2o_out.empty()) outputs.add(o.g2o_out);
+  if (!o.tum_out.empty()) outputs.add(o.tum_out);
+
+  Subject subject = in_context_of(o.input, [&] { return read_subject(o); });
+  subject.reference = subject.graph
+                          ? slam::reference_poses(subject.graph->vertices.size(), {}, o.reference)
+                          : slam::reference_frames(*subject.set, o.reference);
+  require_memory("--trials " + std::to_string(o.trials) + " (the trials' results)",
+                 static_cast<double>(o.trials) * slam::trial_result_bytes(subject.poses()));
+  const std::vector<slam::OptimizeResult> trials =
+      in_context_of(o.input, [&] { return run_study(subject, o); });
+  slam::StudyResult r = slam::summarize(o.input, o.s, trials);
+  if (!subject.reference.empty()) r.error = eval::frames_error(r.best.frames, subject.reference);
+
+  outputs.write(result_json, [&](std::ostream& out) { slam::write_result(out, r); });
+  outputs.write(trials_csv,
+                [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
+  outputs.write(convergence_csv,
+                [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
+  outputs.write(times_json, [&](std::ostream& out) { slam::write_times_json(out, trials); });
+  if (!o.g2o_out.empty())
+    outputs.write(o.g2o_out, [&](std::ostream& out) {
       slam::write_pose_graph(out, subject.map_graph(r.best.frames), o.g2o_out);
     });
-    std::printf("wrote %s\n", o.g2o_out.c_str());
-  }
-  if (!o.tum_out.empty()) {
-    write_atomically(o.tum_out, [&](std::ostream& out) {
+  if (!o.tum_out.empty())
+    outputs.write(o.tum_out, [&](std::ostream& out) {
       slam::write_tum(out, subject.trajectory(r.best.frames));
     });
-    std::printf("wrote %s\n", o.tum_out.c_str());
-  }
+  outputs.commit();
+
+  print_summary(r, subject, o);
+  std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv, %s.times.json\n", prefix.c_str(),
+              prefix.c_str(), prefix.c_str(), prefix.c_str());
+  if (!o.g2o_out.empty()) std::printf("wrote %s\n", o.g2o_out.c_str());
+  if (!o.tum_out.empty()) std::printf("wrote %s\n", o.tum_out.c_str());
 }
 
 }  // namespace
@@ -168,13 +189,16 @@ void add_optimize_command(CLI::App& app) {
          "run on the graph from its vertex poses, the other methods on its fragment chain")
       ->required();
   cmd->add_option("--trials", o->trials, "independent trials (trial t: seed mix(seed, t))")
+      ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads,
                   "threads: trials run in parallel (with --trials 1: the ants); 0 = all cores")
+      ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   add_optimizer_options(*cmd, o->optimizer);
   cmd->add_option("-m,--samples", o->import.samples,
                   "pose graph input: samples drawn per alignment")
+      ->check(count_in(1, kMaxSamples))
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
                   "ground-truth poses (.g2o, .graph, .tum, `x y theta` lines) for the trajectory "

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <optional>
 
 #include "frontend/laser_log.hpp"
@@ -21,5 +22,9 @@ struct SensorOptions {
 };
 
 void add_sensor_options(CLI::App& command, SensorOptions& options);
+
+/// Reads a CARMEN log with the options' geometry and prints each of the reader's warnings
+/// (sensor_check.hpp) as one line "warning: LOG: ..." on stderr.
+frontend::LaserLog read_laser_log(const std::filesystem::path& path, const SensorOptions& options);
 
 }  // namespace antslam::cli

@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/evaluation.hpp"
 #include "frontend/carmen_writer.hpp"
@@ -23,6 +25,7 @@
 #include "output_options.hpp"
 #include "sensor_options.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -38,8 +41,13 @@ struct SimulateOptions {
 
 void run(const SimulateOptions& o) {
   frontend::validate(o.noise);
-  const frontend::OdometryBenchmark b = frontend::simulate_odometry(
-      frontend::read_carmen_file(o.log, o.sensor.overrides()), o.noise, o.seed);
+  OutputFiles outputs;
+  const std::filesystem::path log_out = outputs.add(o.out / "log.clf");
+  const std::filesystem::path reference = outputs.add(o.out / "reference.tum");
+  const std::filesystem::path report_path = outputs.add(o.out / "report.json");
+  frontend::LaserLog log = read_laser_log(o.log, o.sensor);
+  const frontend::OdometryBenchmark b = in_context_of(
+      o.log, [&] { return frontend::simulate_odometry(std::move(log), o.noise, o.seed); });
 
   std::ostringstream noise;
   noise << "linear " << o.noise.linear << " m/m, angular " << o.noise.angular << " rad/rad, drift "
@@ -49,12 +57,11 @@ void run(const SimulateOptions& o) {
           " with odometry derived from its corrected poses",
       "seed " + std::to_string(o.seed) + "; noise per step: " + noise.str(),
       "the corrected poses are in reference.tum; ODOM messages were dropped"};
-  write_atomically(o.out / "log.clf",
-                   [&](std::ostream& out) { frontend::write_carmen(out, b.log, comments); });
-  write_atomically(o.out / "reference.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, b.reference); });
+  outputs.write(log_out, [&](std::ostream& out) { frontend::write_carmen(out, b.log, comments); });
+  outputs.write(reference, [&](std::ostream& out) { slam::write_tum(out, b.reference); });
 
-  const eval::Evaluation drift = eval::evaluate(b.odometry, b.reference, {});
+  const eval::Evaluation drift =
+      in_context_of(o.log, [&] { return eval::evaluate(b.odometry, b.reference, {}); });
   const double length = slam::path_length(b.reference);
   const nlohmann::json report = {{"log", o.log.string()},
                                  {"scans", b.log.scans.size()},
@@ -69,8 +76,8 @@ void run(const SimulateOptions& o) {
                                  {"path_length_m", length},
                                  {"odometry_ate_rmse_m", drift.ate.translation_m.rmse},
                                  {"odometry_ate_max_m", drift.ate.translation_m.max}};
-  write_atomically(o.out / "report.json",
-                   [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  outputs.write(report_path, json_text(report));
+  outputs.commit();
 
   if (b.restamped)
     std::printf("%s: scan timestamps do not increase strictly: re-stamped evenly from %.6f s\n",
@@ -79,8 +86,8 @@ void run(const SimulateOptions& o) {
       "%s: %zu scans, %.1f m; simulated odometry (seed %llu): ATE %.3f m rmse, %.3f m max\n",
       o.log.string().c_str(), b.log.scans.size(), length, static_cast<unsigned long long>(o.seed),
       drift.ate.translation_m.rmse, drift.ate.translation_m.max);
-  std::printf("wrote %s, %s, %s\n", (o.out / "log.clf").string().c_str(),
-              (o.out / "reference.tum").string().c_str(), (o.out / "report.json").string().c_str());
+  std::printf("wrote %s, %s, %s\n", log_out.string().c_str(), reference.string().c_str(),
+              report_path.string().c_str());
 }
 
 }  // namespace
@@ -95,16 +102,22 @@ void add_simulate_odometry_command(CLI::App& app) {
   cmd->add_option("log", o.log, "corrected CARMEN log (pose = odom = corrected; may be gzipped)")
       ->required();
   add_out_dir_option(*cmd, o.out, "output directory (required)");
-  cmd->add_option("--seed", o.seed, "seed of the odometry noise")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "seed of the odometry noise")
+      ->check(non_negative_integer())
+      ->capture_default_str();
   cmd->add_option("--linear-noise", o.noise.linear, "std of translation error per metre, m/m")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   cmd->add_option("--angular-noise", o.noise.angular,
                   "std of heading error per radian turned, rad/rad")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   cmd->add_option("--drift-noise", o.noise.drift, "std of heading error per metre, rad/m")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   cmd->add_option("--heading-bias", o.noise.heading_bias,
                   "systematic heading error per metre, rad/m")
+      ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   add_sensor_options(*cmd, o.sensor);
   cmd->callback([options] {

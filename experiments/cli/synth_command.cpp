@@ -8,10 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "cli/memory.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/synth.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -30,8 +32,9 @@ struct SynthOptions {
 /// An option that sets one field of SynthSettings, overriding the preset when given.
 template <class T>
 void add_setting(CLI::App& cmd, SynthOptions& o, const std::string& name, T Settings::*field,
-                 const std::string& help) {
-  CLI::Option* option = cmd.add_option(name, o.given.*field, help)->capture_default_str();
+                 const std::string& help, const CLI::Validator& check) {
+  CLI::Option* option =
+      cmd.add_option(name, o.given.*field, help)->check(check)->capture_default_str();
   o.overrides.push_back([option, field](Settings& s, const Settings& given) {
     if (option->count() > 0) s.*field = given.*field;
   });
@@ -40,8 +43,14 @@ void add_setting(CLI::App& cmd, SynthOptions& o, const std::string& name, T Sett
 void run(const SynthOptions& o) {
   Settings s = o.preset.empty() ? Settings{} : slam::synth_preset(o.preset);
   for (const auto& override_setting : o.overrides) override_setting(s, o.given);
+  OutputFiles outputs;
+  outputs.add(o.output);
+  require_memory("-n " + std::to_string(s.fragments) + " -m " + std::to_string(s.samples) +
+                     " (the fragment set)",
+                 slam::fragment_set_bytes(s.fragments, s.samples, s.trajectory_poses));
   const slam::FragmentSet set = slam::synthesize(s);
-  write_atomically(o.output, [&](std::ostream& out) { slam::write_fragment_set(out, set); });
+  outputs.write(o.output, [&](std::ostream& out) { slam::write_fragment_set(out, set); });
+  outputs.commit();
   std::printf("wrote %s: %zu fragments, %zu samples each, %zu loop closure(s)\n", o.output.c_str(),
               set.fragments.size(), s.samples, set.closures.size());
 }
@@ -56,24 +65,32 @@ void add_synth_command(CLI::App& app) {
                   "paper9, paper15 or paper24 (the paper's sizes, M = 20); other options "
                   "override it");
   cmd->add_option("-o,--output", o->output, "fragment-set JSON to write")->required();
-  add_setting(*cmd, *o, "-n,--fragments", &Settings::fragments, "number of fragments N");
-  add_setting(*cmd, *o, "-m,--samples", &Settings::samples, "samples per alignment M");
-  add_setting(*cmd, *o, "--loop-length", &Settings::loop_length_m, "loop perimeter, m");
-  add_setting(*cmd, *o, "--aspect", &Settings::aspect, "width / height of the loop");
-  add_setting(*cmd, *o, "--laps", &Settings::laps, "times around the loop (> 1: more closures)");
-  add_setting(*cmd, *o, "--sigma-xy", &Settings::sigma_xy, "alignment std-dev of x, y, m");
-  add_setting(*cmd, *o, "--sigma-theta", &Settings::sigma_theta, "alignment std-dev of theta, rad");
+  add_setting(*cmd, *o, "-n,--fragments", &Settings::fragments, "number of fragments N",
+              count_in(2, slam::kMaxSynthFragments));
+  add_setting(*cmd, *o, "-m,--samples", &Settings::samples, "samples per alignment M",
+              count_in(1, slam::kMaxSynthSamples));
+  add_setting(*cmd, *o, "--loop-length", &Settings::loop_length_m, "loop perimeter, m",
+              finite_in(0.0, 1e6));
+  add_setting(*cmd, *o, "--aspect", &Settings::aspect, "width / height of the loop",
+              finite_in(1e-3, 1e3));
+  add_setting(*cmd, *o, "--laps", &Settings::laps, "times around the loop (> 1: more closures)",
+              count_in(1, 1000));
+  add_setting(*cmd, *o, "--sigma-xy", &Settings::sigma_xy, "alignment std-dev of x, y, m",
+              finite_in(0.0, 1e3));
+  add_setting(*cmd, *o, "--sigma-theta", &Settings::sigma_theta, "alignment std-dev of theta, rad",
+              finite_in(0.0, 10.0));
   add_setting(*cmd, *o, "--correlation", &Settings::correlation,
-              "correlation of x, y, theta in (-0.5, 1)");
+              "correlation of x, y, theta in (-0.5, 1)", finite_in(-0.5, 1.0));
   add_setting(*cmd, *o, "--closure-sigma-xy", &Settings::closure_sigma_xy,
-              "hypothesis std-dev of x, y, m");
+              "hypothesis std-dev of x, y, m", finite_in(0.0, 1e3));
   add_setting(*cmd, *o, "--closure-sigma-theta", &Settings::closure_sigma_theta,
-              "hypothesis std-dev of theta, rad");
+              "hypothesis std-dev of theta, rad", finite_in(0.0, 10.0));
   add_setting(*cmd, *o, "--revisit-radius", &Settings::revisit_radius_m,
-              "laps > 1: frames closer than this close a loop, m");
+              "laps > 1: frames closer than this close a loop, m", finite_in(0.0, 1e6));
   add_setting(*cmd, *o, "--trajectory-poses", &Settings::trajectory_poses,
-              "robot poses kept per fragment");
-  add_setting(*cmd, *o, "--seed", &Settings::seed, "seed of every random draw");
+              "robot poses kept per fragment", count_in(0, 10000));
+  add_setting(*cmd, *o, "--seed", &Settings::seed, "seed of every random draw",
+              non_negative_integer());
   cmd->add_flag("--noise-free", o->given.noise_free, "means and hypotheses equal the ground truth");
   o->overrides.push_back(
       [](Settings& s, const Settings& given) { s.noise_free = given.noise_free; });

@@ -12,7 +12,9 @@
 #include <string>
 
 #include "baselines/tinyslam.hpp"
-#include "cli/atomic_file.hpp"
+#include "cli/errors.hpp"
+#include "cli/json_output.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "frontend/image.hpp"
@@ -20,6 +22,7 @@
 #include "output_options.hpp"
 #include "sensor_options.hpp"
 #include "slamgraph/trajectory.hpp"
+#include "validators.hpp"
 
 namespace antslam::cli {
 
@@ -34,21 +37,26 @@ struct TinySlamOptions {
 
 void run(const TinySlamOptions& o) {
   baselines::validate(o.settings);
-  const frontend::LaserLog log = frontend::read_carmen_file(o.log, o.sensor.overrides());
+  OutputFiles outputs;
+  const std::filesystem::path trajectory = outputs.add(o.out / "trajectory.tum");
+  const std::filesystem::path map = outputs.add(o.out / "map.png");
+  const std::filesystem::path report_path = outputs.add(o.out / "report.json");
+  const frontend::LaserLog log = read_laser_log(o.log, o.sensor);
+  frontend::require_time_order(log);
   Progress progress;
   const auto start = std::chrono::steady_clock::now();
-  const baselines::TinySlamResult result =
-      baselines::run_tinyslam(log, o.settings, [&](std::size_t done) {
-        progress.update("tinyslam: scan " + std::to_string(done) + "/" +
-                        std::to_string(log.scans.size()));
-      });
+  const baselines::TinySlamResult result = in_context_of(o.log, [&] {
+    return baselines::run_tinyslam(log, o.settings, [&](std::size_t done) {
+      progress.update("tinyslam: scan " + std::to_string(done) + "/" +
+                      std::to_string(log.scans.size()));
+    });
+  });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.clear();
 
-  write_atomically(o.out / "trajectory.tum",
-                   [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
-  write_atomically(o.out / "map.png", frontend::encode_png(baselines::map_image(result.map)));
+  outputs.write(trajectory, [&](std::ostream& out) { slam::write_tum(out, result.trajectory); });
+  outputs.write(map, frontend::encode_png(baselines::map_image(result.map)));
   const baselines::TinySlamSettings& s = o.settings;
   const nlohmann::json report = {
       {"log", o.log.string()},
@@ -68,14 +76,14 @@ void run(const TinySlamOptions& o) {
       {"unmatched_scans", result.unmatched},
       {"seconds", seconds},
       {"scans_per_second", static_cast<double>(log.scans.size()) / seconds}};
-  write_atomically(o.out / "report.json",
-                   [&](std::ostream& out) { out << report.dump(2) << '\n'; });
+  outputs.write(report_path, json_text(report));
+  outputs.commit();
   std::printf("%s: %zu scans in %.2f s (%.0f scans/s, %.0f matches per scan)\n",
               o.log.string().c_str(), log.scans.size(), seconds,
               static_cast<double>(log.scans.size()) / seconds,
               static_cast<double>(result.evaluations) / static_cast<double>(log.scans.size()));
-  std::printf("wrote %s, %s, %s\n", (o.out / "trajectory.tum").string().c_str(),
-              (o.out / "map.png").string().c_str(), (o.out / "report.json").string().c_str());
+  std::printf("wrote %s, %s, %s\n", trajectory.string().c_str(), map.string().c_str(),
+              report_path.string().c_str());
 }
 
 }  // namespace
@@ -87,21 +95,32 @@ void add_tinyslam_command(CLI::App& app) {
       "tinyslam", "tinySLAM-style baseline on a CARMEN log: trajectory.tum, map.png, report.json");
   cmd->add_option("log", options->log, "CARMEN log (.clf/.log, may be gzipped)")->required();
   add_out_dir_option(*cmd, options->out, "output directory (required)");
-  cmd->add_option("--seed", s.seed, "seed of the Monte-Carlo search")->capture_default_str();
-  cmd->add_option("--resolution", s.resolution, "map cell, metres")->capture_default_str();
+  cmd->add_option("--seed", s.seed, "seed of the Monte-Carlo search")
+      ->check(non_negative_integer())
+      ->capture_default_str();
+  cmd->add_option("--resolution", s.resolution, "map cell, metres")
+      ->check(finite_in(1e-4, 1e3))
+      ->capture_default_str();
   cmd->add_option("--hole-width", s.hole_width, "obstacle blur width, metres")
+      ->check(finite_in(0.0, 1e3))
       ->capture_default_str();
   cmd->add_option("--quality", s.quality, "q of eq. (1) at the predicted pose")
+      ->check(finite_in(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--refined-quality", s.refined_quality, "q of eq. (1) once the search moved it")
+      ->check(finite_in(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--sigma-xy", s.sigma_xy, "std of the position draws, metres")
+      ->check(finite_in(0.0, 1e3))
       ->capture_default_str();
   cmd->add_option("--sigma-theta", s.sigma_theta, "std of the heading draws, radians")
+      ->check(finite_in(0.0, 1e3))
       ->capture_default_str();
   cmd->add_option("--stop", s.stop, "draws without improvement that end a search")
+      ->check(count_in(1, baselines::kMaxStop))
       ->capture_default_str();
   cmd->add_option("--map-max-range", s.max_range, "readings beyond are not used, metres")
+      ->check(finite_in(0.0, frontend::kMaxLaserRange))
       ->capture_default_str();
   add_sensor_options(*cmd, options->sensor);
   cmd->callback([options] {

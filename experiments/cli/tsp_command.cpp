@@ -1,6 +1,7 @@
 // antslam tsp: solve one TSPLIB instance, print a summary, optionally write the best tour, a
 // per-iteration trace (CSV) and a JSON summary.
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,9 +12,13 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "cli/atomic_file.hpp"
+#include "aco/variant.hpp"
+#include "cli/json_output.hpp"
+#include "cli/memory.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "tsp/optima.hpp"
@@ -33,6 +38,8 @@ struct TspCommand {
   double cpu_time_s = 0.0;
   double optimum = 0.0;
   bool stop_at_optimum = false;
+  bool quiet = false;  ///< print only "Best <length>" (ACOTSP's --quiet, read by irace's runners)
+  std::size_t tries = 1;  ///< ACOTSP's independent tries; one run per call here
   std::filesystem::path tour_out;
   std::filesystem::path trace_csv;
   std::filesystem::path json_out;
@@ -46,22 +53,107 @@ std::string excess_text(double length, std::optional<double> optimum) {
   return out.str();
 }
 
+void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
+                   const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
+                   std::optional<double> optimum, double setup_s) {
+  const tsp::Instance& instance = problem.instance();
+  std::cout << "instance     " << instance.name() << " (" << instance.size() << " cities, "
+            << tsp::to_string(instance.type()) << ")\n"
+            << "algorithm    " << describe_algorithm(problem, c.algorithm, result.settings)
+            << ", seed " << settings.aco.seed << ", " << result.settings.threads << " thread(s) ("
+            << aco::to_string(result.settings.backend) << ")\n"
+            << "best length  " << std::setprecision(15) << length;
+  if (optimum)
+    std::cout << "  (optimum " << *optimum << ", " << excess_text(length, optimum) << ")";
+  std::cout << "\niterations   " << result.iterations
+            << " (stopped: " << aco::to_string(result.reason) << ")\n"
+            << std::fixed << std::setprecision(3) << "time         " << result.elapsed_s
+            << " s, best found after " << result.time_to_best_s << " s (iteration "
+            << result.best_iteration << ")\n"
+            << "setup        " << setup_s << " s of it reading the instance, candidate lists\n";
+}
+
+void write_outputs(const TspCommand& c, OutputFiles& outputs, const tsp::TspProblem& problem,
+                   const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
+                   std::optional<double> optimum, const std::vector<aco::IterationReport>& trace) {
+  const tsp::Instance& instance = problem.instance();
+  if (!c.tour_out.empty())
+    outputs.write(c.tour_out, [&](std::ostream& out) {
+      std::ostringstream comment;
+      comment << "length " << std::setprecision(15) << length << ", antslam tsp "
+              << c.algorithm.variant << " seed " << settings.aco.seed;
+      tsp::write_tour(out, instance.name() + ".tour", result.best.path, comment.str());
+    });
+  if (!c.trace_csv.empty())
+    outputs.write(c.trace_csv, [&](std::ostream& out) {
+      out << "iteration,elapsed_s,iteration_best,global_best\n" << std::setprecision(15);
+      for (const aco::IterationReport& r : trace)
+        out << r.iteration << ',' << r.elapsed_s << ',' << r.iteration_best << ',' << r.global_best
+            << '\n';
+    });
+  if (!c.json_out.empty()) {
+    nlohmann::json j = {{"instance", instance.name()},
+                        {"cities", instance.size()},
+                        {"edge_weight_type", tsp::to_string(instance.type())},
+                        {"variant", c.algorithm.variant},
+                        {"ants", result.settings.colony.ants},
+                        {"rho", result.settings.rho},
+                        {"local_search", c.algorithm.local_search},
+                        {"neighbours", problem.neighbours(0).size()},
+                        {"candidates", problem.candidates(0).size()},
+                        {"focused_edges", result.settings.colony.focused.min_new_edges},
+                        {"seed", settings.aco.seed},
+                        {"threads", result.settings.threads},
+                        {"backend", aco::to_string(result.settings.backend)},
+                        {"best_length", length},
+                        {"iterations", result.iterations},
+                        {"best_iteration", result.best_iteration},
+                        {"elapsed_s", result.elapsed_s},
+                        {"time_to_best_s", result.time_to_best_s},
+                        {"stop_reason", aco::to_string(result.reason)}};
+    if (optimum) {
+      j["optimum"] = *optimum;
+      j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
+    }
+    outputs.write(c.json_out, json_text(j));
+  }
+  outputs.commit();
+}
+
 void run(const TspCommand& c) {
   const tsp::SolverSettings settings = solver_settings(c.algorithm);
-  const tsp::TspProblem problem(tsp::read_instance(c.instance), problem_settings(c.algorithm));
+  OutputFiles outputs;
+  if (!c.tour_out.empty()) outputs.add(c.tour_out);
+  if (!c.trace_csv.empty()) outputs.add(c.trace_csv);
+  if (!c.json_out.empty()) outputs.add(c.json_out);
+  const auto setup_start = std::chrono::steady_clock::now();
+  tsp::Instance read = tsp::read_instance(c.instance);
+  const auto n = static_cast<double>(read.size());
+  if (read.size() <= c.algorithm.problem.matrix_limit)
+    require_memory("--matrix-limit " + std::to_string(c.algorithm.problem.matrix_limit) +
+                       " (the distance matrix)",
+                   4.0 * n * n);
+  const tsp::TspProblem problem(std::move(read), problem_settings(c.algorithm));
+  const double setup_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();
   const tsp::Instance& instance = problem.instance();
   const std::optional<double> optimum =
       c.optimum > 0.0 ? std::optional<double>(c.optimum) : tsp::known_optimum(c.instance);
 
-  aco::Termination termination{
-      .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
+  // --time covers the whole solve: reading the instance and building the colony count.
+  aco::Termination termination{.max_iterations = c.iterations,
+                               .time_limit_s = c.time_s,
+                               .cpu_time_limit_s = c.cpu_time_s,
+                               .start = setup_start};
   if (!termination.bounded()) {
     termination.time_limit_s = 10.0;
-    std::cout << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
+    if (!c.quiet)
+      std::cout
+          << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
   }
   if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
 
-  Progress progress;
+  Progress progress(!c.quiet && stderr_is_terminal());
   std::vector<aco::IterationReport> trace;
   const auto observer = [&](const aco::IterationReport& r) {
     if (!c.trace_csv.empty()) trace.push_back(r);
@@ -79,59 +171,12 @@ void run(const TspCommand& c) {
   if (length != result.best.cost)
     throw std::logic_error("internal error: the best tour's length does not match its cost");
 
-  std::cout << "instance     " << instance.name() << " (" << instance.size() << " cities, "
-            << tsp::to_string(instance.type()) << ")\n"
-            << "algorithm    " << describe_algorithm(problem, c.algorithm, result.settings)
-            << ", seed " << settings.aco.seed << ", " << result.settings.threads << " thread(s) ("
-            << aco::to_string(result.settings.backend) << ")\n"
-            << "best length  " << std::setprecision(15) << length;
-  if (optimum)
-    std::cout << "  (optimum " << *optimum << ", " << excess_text(length, optimum) << ")";
-  std::cout << "\niterations   " << result.iterations
-            << " (stopped: " << aco::to_string(result.reason) << ")\n"
-            << std::fixed << std::setprecision(3) << "time         " << result.elapsed_s
-            << " s, best found after " << result.time_to_best_s << " s (iteration "
-            << result.best_iteration << ")\n";
-
-  if (!c.tour_out.empty())
-    write_atomically(c.tour_out, [&](std::ostream& out) {
-      std::ostringstream comment;
-      comment << "length " << std::setprecision(15) << length << ", antslam tsp "
-              << c.algorithm.variant << " seed " << settings.aco.seed;
-      tsp::write_tour(out, instance.name() + ".tour", result.best.path, comment.str());
-    });
-  if (!c.trace_csv.empty())
-    write_atomically(c.trace_csv, [&](std::ostream& out) {
-      out << "iteration,elapsed_s,iteration_best,global_best\n" << std::setprecision(15);
-      for (const aco::IterationReport& r : trace)
-        out << r.iteration << ',' << r.elapsed_s << ',' << r.iteration_best << ',' << r.global_best
-            << '\n';
-    });
-  if (!c.json_out.empty()) {
-    nlohmann::json j = {{"instance", instance.name()},
-                        {"cities", instance.size()},
-                        {"edge_weight_type", tsp::to_string(instance.type())},
-                        {"variant", c.algorithm.variant},
-                        {"ants", result.settings.colony.ants},
-                        {"rho", result.settings.rho},
-                        {"local_search", c.algorithm.local_search},
-                        {"neighbours", problem.neighbours(0).size()},
-                        {"candidates", problem.candidates(0).size()},
-                        {"seed", settings.aco.seed},
-                        {"threads", result.settings.threads},
-                        {"backend", aco::to_string(result.settings.backend)},
-                        {"best_length", length},
-                        {"iterations", result.iterations},
-                        {"best_iteration", result.best_iteration},
-                        {"elapsed_s", result.elapsed_s},
-                        {"time_to_best_s", result.time_to_best_s},
-                        {"stop_reason", aco::to_string(result.reason)}};
-    if (optimum) {
-      j["optimum"] = *optimum;
-      j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
-    }
-    write_atomically(c.json_out, j.dump(2) + "\n");
+  if (c.quiet) {
+    std::cout << "Best " << std::setprecision(15) << length << '\n';
+  } else {
+    print_summary(c, problem, settings, result, length, optimum, setup_s);
   }
+  write_outputs(c, outputs, problem, settings, result, length, optimum, trace);
 }
 
 }  // namespace
@@ -139,8 +184,18 @@ void run(const TspCommand& c) {
 void add_tsp_command(CLI::App& app) {
   auto command = std::make_shared<TspCommand>();
   CLI::App* sub = app.add_subcommand("tsp", "Solve a TSPLIB instance with an ACO variant");
-  sub->add_option("--instance", command->instance, "TSPLIB .tsp file")->required();
+  sub->add_option("-i,--instance,--tsplibfile", command->instance, "TSPLIB .tsp file")->required();
   add_tsp_options(*sub, command->algorithm, true);
+  for (const aco::VariantInfo& info : aco::kVariants)  // ACOTSP's --as, --eas, ..., --mmas
+    sub->add_flag_callback(
+        "--" + std::string(info.name),
+        [command, name = std::string(info.name)] { command->algorithm.variant = name; },
+        "the same as --variant " + std::string(info.name));
+  sub->add_flag("--quiet", command->quiet,
+                "print one line, 'Best <length>', as ACOTSP's --quiet (for irace's runners)");
+  sub->add_option("--tries", command->tries,
+                  "ACOTSP's independent tries: 1 (one run per call; tsp-experiment repeats runs)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1}));
   sub->add_option("--iterations", command->iterations, "iteration budget (0: none)")
       ->check(non_negative_integer());
   sub->add_option("--time", command->time_s, "wall-clock budget in seconds (0: none)")

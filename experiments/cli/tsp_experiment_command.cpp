@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "aco/variant.hpp"
-#include "cli/atomic_file.hpp"
+#include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "tsp/experiment.hpp"
@@ -53,6 +53,9 @@ void run(const ExperimentCommand& c) {
       .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
   e.stop_at_optimum = c.stop_at_optimum;
   tsp::validate(e);
+  OutputFiles outputs;
+  if (!c.csv_out.empty()) outputs.add(c.csv_out);
+  if (!c.markdown_out.empty()) outputs.add(c.markdown_out);
 
   Progress progress;
   const std::vector<tsp::ExperimentRun> runs =
@@ -69,10 +72,11 @@ void run(const ExperimentCommand& c) {
   const std::string& ls = c.algorithm.local_search;
   tsp::write_summary_markdown(std::cout, runs, ls);
   if (!c.csv_out.empty())
-    write_atomically(c.csv_out, [&](std::ostream& out) { tsp::write_runs_csv(out, runs, ls); });
+    outputs.write(c.csv_out, [&](std::ostream& out) { tsp::write_runs_csv(out, runs, ls); });
   if (!c.markdown_out.empty())
-    write_atomically(c.markdown_out,
-                     [&](std::ostream& out) { tsp::write_summary_markdown(out, runs, ls); });
+    outputs.write(c.markdown_out,
+                  [&](std::ostream& out) { tsp::write_summary_markdown(out, runs, ls); });
+  outputs.commit();
 }
 
 }  // namespace
@@ -93,10 +97,10 @@ void add_tsp_experiment_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--threads", c->threads, "thread counts (comma separated)")
       ->delimiter(',')
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
+      ->check(count_in(1, 1024))
       ->capture_default_str();
   sub->add_option("--seeds", c->seeds, "runs per configuration")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
+      ->check(count_in(1, 100000))
       ->capture_default_str();
   sub->add_option("--first-seed", c->first_seed, "seeds are first-seed, first-seed + 1, ...")
       ->check(non_negative_integer())

@@ -2,8 +2,9 @@
 
 #include <iostream>
 #include <memory>
+#include <string>
 
-#include "cli/atomic_file.hpp"
+#include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "output_options.hpp"
 #include "tsp/generator.hpp"
@@ -18,6 +19,8 @@ struct GenerateCommand {
   std::size_t cities = 1000;
   std::uint64_t seed = 1;
   double side = 1.0e6;
+  std::string kind = "uniform";
+  tsp::ClusterSettings clusters;
   std::filesystem::path out;
 };
 
@@ -26,9 +29,11 @@ struct GenerateCommand {
 void add_tsp_generate_command(CLI::App& app) {
   auto c = std::make_shared<GenerateCommand>();
   CLI::App* sub = app.add_subcommand(
-      "tsp-generate", "Write a random instance: cities uniform in [0, side]^2, EUC_2D");
+      "tsp-generate",
+      "Write a random instance in [0, side]^2, EUC_2D: uniform or clustered (DIMACS portgen / "
+      "portcgen)");
   sub->add_option("--cities", c->cities, "number of cities")
-      ->check(CLI::Range(std::size_t{3}, std::size_t{10'000'000}))
+      ->check(count_in(3, 10'000'000))
       ->capture_default_str();
   sub->add_option("--seed", c->seed, "seed of the coordinates")
       ->check(non_negative_integer())
@@ -36,11 +41,28 @@ void add_tsp_generate_command(CLI::App& app) {
   sub->add_option("--side", c->side, "coordinates are integers in [0, side]")
       ->check(finite_in(1.0, 1.0e9))
       ->capture_default_str();
+  sub->add_option("--kind", c->kind, "uniform, or clustered around cities/10 normal centres")
+      ->check(CLI::IsMember({"uniform", "clustered"}))
+      ->capture_default_str();
+  sub->add_option("--cities-per-cluster", c->clusters.cities_per_cluster,
+                  "clustered: cities / this many centres")
+      ->check(finite_in(1.0, 1e9))
+      ->capture_default_str();
+  sub->add_option("--spread", c->clusters.spread,
+                  "clustered: standard deviation around a centre, in units of side/sqrt(cities)")
+      ->check(finite_in(1e-6, 1e6))
+      ->capture_default_str();
   add_output_option(*sub, c->out, "TSPLIB file to write (required)", {"--out"});
   sub->callback([c] {
     require_output(!c->out.empty(), "--output");
-    const tsp::Instance instance = tsp::random_uniform_instance(c->cities, c->seed, c->side);
-    write_atomically(c->out, [&](std::ostream& out) { tsp::write_instance(out, instance); });
+    OutputFiles outputs;
+    outputs.add(c->out);
+    const tsp::Instance instance =
+        c->kind == "clustered"
+            ? tsp::random_clustered_instance(c->cities, c->seed, c->side, c->clusters)
+            : tsp::random_uniform_instance(c->cities, c->seed, c->side);
+    outputs.write(c->out, [&](std::ostream& out) { tsp::write_instance(out, instance); });
+    outputs.commit();
     std::cout << "wrote " << c->out.string() << " (" << instance.name() << ", " << instance.size()
               << " cities)\n";
   });

@@ -22,9 +22,21 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
       ->check(CLI::IsMember({"none", "2opt", "2.5opt", "3opt"}))
       ->capture_default_str();
   command
-      .add_option("--neighbours", o.problem.ls_neighbours,
+      .add_option_function<std::string>(
+          "--localsearch",
+          [&o](const std::string& level) { o.local_search = acotsp_local_search(level); },
+          "ACOTSP's name: 0 none, 1 2opt, 2 2.5opt, 3 3opt")
+      ->check(CLI::IsMember({"0", "1", "2", "3"}));
+  command
+      .add_option_function<int>(
+          "--dlb", [&o](int on) { o.ls_start = on != 0 ? "changed" : "all"; },
+          "ACOTSP's don't-look bits: 1 keeps them between an ant slot's searches (--ls-start "
+          "changed), 0 starts every search with every city active (--ls-start all)")
+      ->check(CLI::IsMember({0, 1}));
+  command
+      .add_option("--neighbours,--nnls", o.problem.ls_neighbours,
                   "nearest neighbours the local search tries per city")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
+      ->check(count_in(1, 1000))
       ->capture_default_str();
   command
       .add_option("--ls-start", o.ls_start,
@@ -33,29 +45,29 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
       ->check(CLI::IsMember({"changed", "all"}))
       ->capture_default_str();
   command
-      .add_option("--candidates", o.problem.candidates,
+      .add_option("--candidates,--nnants", o.problem.candidates,
                   "nearest neighbours an ant chooses among (candidate list)")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1000}))
+      ->check(count_in(1, 1000))
       ->capture_default_str();
   command
       .add_option("--ls-ants", p.local_search_ants,
                   "apply local search to this many best ants only (0: every ant)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}))
+      ->check(count_in(0, 1'000'000))
       ->capture_default_str();
   command
       .add_option("--matrix-limit", o.problem.matrix_limit,
-                  "store the full distance matrix up to this many cities")
-      ->check(non_negative_integer())
+                  "store the full distance matrix (4 n^2 bytes) up to this many cities")
+      ->check(count_in(0, 1'000'000))
       ->capture_default_str();
   command.add_option("--ants", p.ants, "ants per iteration (0: variant default)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1'000'000}))
+      ->check(count_in(0, 1'000'000))
       ->capture_default_str();
   if (single_run) {
     command.add_option("--seed", p.seed, "seed of every random choice")
         ->check(non_negative_integer())
         ->capture_default_str();
     command.add_option("--threads", o.threads, "threads building ants")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1024}))
+        ->check(count_in(1, 1024))
         ->capture_default_str();
   }
   add_backend_option(command, o.backend);
@@ -74,11 +86,25 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command.add_option("--xi", p.xi, "ACS: local evaporation rate")
       ->check(finite_in(0.0, 1.0))
       ->capture_default_str();
-  command.add_option("--elite-weight", p.elite_weight, "EAS: weight of the best-so-far (0: n)")
+  command
+      .add_option("--focused-edges", o.solver.focused_edges,
+                  "focused construction: ants change the source tour and copy it after adding "
+                  "this many edges of their own (0: build every tour from nothing; default: 8 "
+                  "for mmas, 0 for the other variants)")
+      ->check(count_in(0, 1'000'000));
+  command
+      .add_option("--source-global-best", p.focused.global_best_source,
+                  "focused construction: probability that the source is the best-so-far tour "
+                  "(else the previous iteration's best)")
+      ->check(finite_in(0.0, 1.0))
+      ->capture_default_str();
+  command
+      .add_option("--elite-weight,--elitistants", p.elite_weight,
+                  "EAS: weight of the best-so-far (0: n)")
       ->check(finite_in(0.0, kBig))
       ->capture_default_str();
-  command.add_option("--rank-width", p.rank_width, "RAS: ranked ants w")
-      ->check(CLI::Range(std::size_t{2}, std::size_t{100000}))
+  command.add_option("--rank-width,--rasranks", p.rank_width, "RAS: ranked ants w")
+      ->check(count_in(2, 100000))
       ->capture_default_str();
   command.add_option("--p-best", p.p_best, "MMAS: p_best setting tau_min")
       ->check(finite_in(1e-12, 1.0 - 1e-12))
@@ -91,7 +117,7 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command
       .add_option("--glob-best-freq", p.glob_best_freq,
                   "hybrid: every this-th iteration only the two best ants deposit")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}))
+      ->check(count_in(1, 1000000))
       ->capture_default_str();
   command.add_option("--tau-max", p.tau_max, "hybrid: pheromone cap")
       ->check(finite_in(1e-300, kBig))
@@ -104,6 +130,13 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
                   "hybrid: deposit numerator Q (0: nearest-neighbour tour length)")
       ->check(finite_in(0.0, kBig))
       ->capture_default_str();
+}
+
+std::string acotsp_local_search(const std::string& level) {
+  static const char* const kNames[] = {"none", "2opt", "2.5opt", "3opt"};
+  if (level.size() != 1 || level[0] < '0' || level[0] > '3')
+    throw std::invalid_argument("--localsearch: '" + level + "' is not 0, 1, 2 or 3");
+  return kNames[level[0] - '0'];
 }
 
 tsp::SolverSettings solver_settings(const TspOptions& o) {
@@ -132,6 +165,9 @@ std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions&
   out << o.variant << ", " << ran.colony.ants << " ants, rho " << ran.rho << ", " << o.local_search;
   if (ran.local_search) out << " (" << problem.neighbours(0).size() << " neighbours)";
   out << ", " << problem.candidates(0).size() << " candidates";
+  if (ran.colony.focused.enabled())
+    out << ", focused (" << ran.colony.focused.min_new_edges << " new edges, source best-so-far "
+        << ran.colony.focused.global_best_source << ")";
   return out.str();
 }
 

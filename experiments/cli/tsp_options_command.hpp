@@ -1,6 +1,9 @@
 #pragma once
 // Options shared by `antslam tsp` and `antslam tsp-experiment`: the ACO variant and its
-// parameters, local search, candidate lists, backend and threads.
+// parameters, local search, candidate lists, focused construction, backend and threads. Where
+// an option means the same as one of ACOTSP 1.03 (Stuetzle), ACOTSP's name is accepted too
+// (--nnls, --nnants, --localsearch, --dlb, --rasranks, --elitistants), so that tuning scenarios
+// written for ACOTSP (irace's acotsp example) can call antslam.
 
 #include <CLI/CLI.hpp>
 
@@ -26,6 +29,9 @@ struct TspOptions {
 /// Registers the options on `command`; values land in `options`. Without `single_run`,
 /// --variant, --seed and --threads are left to the caller (experiments sweep them).
 void add_tsp_options(CLI::App& command, TspOptions& options, bool single_run);
+
+/// ACOTSP's --localsearch level ("0".."3") as our name ("none", "2opt", "2.5opt", "3opt").
+std::string acotsp_local_search(const std::string& level);
 
 /// Checks the names and fills options.solver's variant, local search, backend and threads;
 /// throws std::invalid_argument naming the option on a bad value.

@@ -1,5 +1,6 @@
 #include "validators.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -17,24 +18,36 @@ CLI::Validator finite_in(double lo, double hi) {
           v = std::stod(text, &used);
           if (used != text.size()) return "'" + text + "' is not a number";
         } catch (const std::exception&) {
-          return "'" + text + "' is not a number";
+          return "'" + text + "' is not a finite number";
         }
-        if (!std::isfinite(v) || v < lo || v > hi)
-          return "'" + text + "' is not a finite number in [" + CLI::detail::to_string(lo) + ", " +
+        if (!std::isfinite(v)) return "'" + text + "' is not a finite number";
+        if (v < lo || v > hi)
+          return "'" + text + "' is not in [" + CLI::detail::to_string(lo) + ", " +
                  CLI::detail::to_string(hi) + "]";
         return {};
       },
       description.str());
 }
 
-CLI::Validator non_negative_integer() {
+CLI::Validator count_in(std::uint64_t lo, std::uint64_t hi) {
+  const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [lo, hi, range](std::string& text) -> std::string {
         const bool digits =
             !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-        return digits ? std::string() : "'" + text + "' is not a non-negative integer";
+        if (!digits) return "'" + text + "' is not a whole number in " + range;
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || end != text.data() + text.size() || value < lo || value > hi)
+          return "'" + text + "' is not a whole number in " + range;
+        text = std::to_string(value);
+        return {};
       },
-      "non-negative integer");
+      "whole number in " + range);
+}
+
+CLI::Validator non_negative_integer() {
+  return count_in(0, std::numeric_limits<std::uint64_t>::max());
 }
 
 }  // namespace antslam::cli

@@ -166,6 +166,12 @@ def step_mean(traces, grid):
     return means, stds
 
 
+def path_length(tum):
+    """Metres along the positions of a TUM trajectory file."""
+    poses = [tuple(map(float, line.split()[1:3])) for line in open(tum) if line[0] != "#"]
+    return sum(math.dist(a, b) for a, b in zip(poses, poses[1:]))
+
+
 def read_json(path):
     with open(path) as f:
         return json.load(f)

@@ -19,8 +19,8 @@ fragment's optimized frame times its pose in the fragment).
 import os
 
 from experiment_common import (DATA, antslam, check_program, header, count_option,
-                               markdown_table, parser, plt, pm, progress, read_json, save_csv,
-                               save_figure, save_table, stats)
+                               markdown_table, parser, path_length, plt, pm, progress, read_json,
+                               save_csv, save_figure, save_table, stats)
 
 LASER = os.path.join(DATA, "laser")
 CORRECTED = ["aces", "intel", "freiburg-079", "csail"]
@@ -29,11 +29,6 @@ RAW = [("mit-csail", "mit-csail.clf", "mit-csail.ref.tum", None),
 OPTIMIZERS = ["hybrid", "hybrid+nlopt", "ceres"]
 METHODS = ["odometry", "scan-matcher", "tinyslam"] + OPTIMIZERS
 QUICK = ["aces", "intel-subset"]  # one corrected log, one raw log with relations
-
-
-def path_length(tum):
-    poses = [tuple(map(float, line.split()[1:3])) for line in open(tum) if line[0] != "#"]
-    return sum(((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2) ** 0.5 for a, b in zip(poses, poses[1:]))
 
 
 def score(args, estimate, reference, relations):

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace antslam::frontend {
@@ -42,6 +43,15 @@ void DistanceField::cover(const CellBox& box) {
   if (box.y0 < grown.y0) grown.y0 = box.y0 - margin;
   if (box.x1 > grown.x1) grown.x1 = box.x1 + margin;
   if (box.y1 > grown.y1) grown.y1 = box.y1 + margin;
+  const double count = (static_cast<double>(grown.x1) - static_cast<double>(grown.x0) + 1.0) *
+                       (static_cast<double>(grown.y1) - static_cast<double>(grown.y0) + 1.0);
+  if (!(count <= kMaxGridCells)) {
+    std::ostringstream message;
+    message << "the scans would need a grid of " << count << " cells of " << resolution_
+            << " m (more than " << kMaxGridCells
+            << "): a pose or a laser reading of the log is implausibly far away";
+    throw std::runtime_error(message.str());
+  }
   const std::int64_t width = grown.x1 - grown.x0 + 1;
   std::vector<float> cells(static_cast<std::size_t>(width * (grown.y1 - grown.y0 + 1)),
                            static_cast<float>(max_distance_));
@@ -86,9 +96,8 @@ float DistanceField::at(std::int64_t x, std::int64_t y) const {
 
 double DistanceField::interpolate(const Eigen::Vector2d& p, Eigen::Vector2d* gradient) const {
   const double fx = p.x() / resolution_, fy = p.y() / resolution_;
-  const double ix = std::floor(fx), iy = std::floor(fy);
-  const double tx = fx - ix, ty = fy - iy;
-  const auto x = static_cast<std::int64_t>(ix), y = static_cast<std::int64_t>(iy);
+  const std::int64_t x = floor_index(fx), y = floor_index(fy);
+  const double tx = fx - static_cast<double>(x), ty = fy - static_cast<double>(y);
   double d00, d10, d01, d11;
   if (x >= bounds_.x0 && x < bounds_.x1 && y >= bounds_.y0 && y < bounds_.y1) {
     const float* c = cells_.data() + (y - bounds_.y0) * stride() + (x - bounds_.x0);

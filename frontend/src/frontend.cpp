@@ -29,8 +29,12 @@ Frontend::Frontend(const FrontendSettings& settings, std::string name)
 void Frontend::add_scan(const LaserScan& scan) {
   const auto start = std::chrono::steady_clock::now();
   const MatchResult match = matcher_.add_scan(scan);
-  if (!match.matched && !trajectory_.empty()) ++stats_.unmatched;
-  if (match.recovered) ++stats_.recovered;
+  stats_.unmatched += match.status == MatchStatus::too_few_points ? 1U : 0U;
+  stats_.recovered += match.status == MatchStatus::recovered ? 1U : 0U;
+  stats_.diverged += match.status == MatchStatus::diverged ? 1U : 0U;
+  stats_.odometry_along_flat += match.odometry_along_flat ? 1U : 0U;
+  records_.push_back(
+      {match.status, match.prior_mahalanobis, match.inlier_fraction, match.odometry_along_flat});
   trajectory_.push_back({scan.stamp, match.pose()});
   const bool started =
       fragmenter_.add(stats_.scans, scan.stamp, match.pose(), match.gaussian.covariance());
@@ -67,6 +71,7 @@ FrontendResult Frontend::finish() {
   result.trajectory = trajectory_;
   result.fragments = fragmenter_.fragments();
   result.attempts = closer_.attempts();
+  result.scans = records_;
   result.stats = stats_;
   return result;
 }

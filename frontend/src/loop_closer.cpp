@@ -76,11 +76,25 @@ std::vector<LoopCloser::Candidate> LoopCloser::candidates(std::size_t b,
   return out;
 }
 
-const FragmentMap& LoopCloser::target(std::size_t a) {
+const FragmentMap& LoopCloser::target(std::size_t a, std::size_t b, const Fragmenter& fragmenter) {
+  // Fragments a - k .. a + k, but none within min_fragment_gap of b (b would match itself).
+  const std::size_t first = a - std::min(a, settings_.target_neighbours);
+  const std::size_t last =
+      std::min(a + settings_.target_neighbours, b - settings_.min_fragment_gap);
+  const auto key = std::make_pair(a, last);
   const auto hit = std::find_if(cache_.begin(), cache_.end(),
-                                [a](const auto& entry) { return entry.first == a; });
+                                [&](const auto& entry) { return entry.first == key; });
   if (hit != cache_.end()) return *hit->second;
-  cache_.emplace_front(a, std::make_unique<FragmentMap>(map_[a], settings_));
+  // The neighbours placed in F_a as the scan matcher placed them (locally accurate).
+  const std::vector<FragmentRecord>& fragments = fragmenter.fragments();
+  Points points;
+  for (std::size_t n = first; n <= last; ++n) {
+    const Points moved =
+        transform_points(slam::between(fragments[a].frame, fragments[n].frame), map_[n]);
+    points.insert(points.end(), moved.begin(), moved.end());
+  }
+  cache_.emplace_front(
+      key, std::make_unique<FragmentMap>(thin_points(points, settings_.resolution), settings_));
   if (cache_.size() > kCachedMaps) cache_.pop_back();
   return *cache_.front().second;
 }
@@ -96,15 +110,15 @@ void LoopCloser::close(std::size_t b, const Fragmenter& fragmenter) {
   for (std::size_t k = 0; k < found.size() && k < settings_.max_attempts; ++k) {
     const Candidate& c = found[k];
     const auto start = std::chrono::steady_clock::now();
-    const FragmentMap target(map_[c.from], settings_);
-    ClosureAttempt attempt{c.from,
-                           b,
-                           c.mahalanobis,
-                           c.estimate.pose,
-                           c.estimate.covariance,
-                           match_fragments(target, matched_[b], c.estimate.pose,
-                                           c.estimate.covariance, anchor, settings_),
-                           0.0};
+    ClosureAttempt attempt{
+        c.from,
+        b,
+        c.mahalanobis,
+        c.estimate.pose,
+        c.estimate.covariance,
+        match_fragments(target(c.from, b, fragmenter), matched_[b], c.estimate.pose,
+                        c.estimate.covariance, anchor, settings_),
+        0.0};
     attempt.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (attempt.match.accepted && (!chosen || attempt.match.score > attempts_[*chosen].match.score))

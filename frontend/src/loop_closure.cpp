@@ -43,6 +43,7 @@ void validate(const LoopClosureSettings& s) {
               s.max_window_angular <= 3.1416,
           "window angular limits", "must be ordered and at most pi");
   require(s.min_fragment_gap >= 1, "min_fragment_gap", "must be at least 1");
+  require(s.target_neighbours <= 20, "target_neighbours", "must be at most 20");
   require(s.overlap_radius >= 0.0 && std::isfinite(s.overlap_radius), "overlap_radius",
           "must be >= 0");
   require(s.min_uncertainty >= 0.0 && std::isfinite(s.min_uncertainty), "min_uncertainty",

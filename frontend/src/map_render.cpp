@@ -48,15 +48,20 @@ struct Frame {
   long cell_y(double y) const { return static_cast<long>(std::floor((y - y0) / res)); }
 };
 
-Frame frame_for(const LaserLog& log, const MapLayout& layout,
-                std::span<const std::vector<slam::Pose2>> trials, const MapRenderSettings& s) {
+/// The world box (metres) that the beams, lasers and frames of all trials cover.
+struct Extent {
   double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
-  const auto extend = [&](const Eigen::Vector2d& p) {
+  void extend(const Eigen::Vector2d& p) {
     lo_x = std::min(lo_x, p.x());
     lo_y = std::min(lo_y, p.y());
     hi_x = std::max(hi_x, p.x());
     hi_y = std::max(hi_y, p.y());
-  };
+  }
+};
+
+Extent extent_of(const LaserLog& log, const MapLayout& layout,
+                 std::span<const std::vector<slam::Pose2>> trials, const MapRenderSettings& s) {
+  Extent e;
   for (const std::vector<slam::Pose2>& frames : trials) {
     if (frames.size() != layout.size())
       throw std::invalid_argument("map: " + std::to_string(frames.size()) + " frames for " +
@@ -66,18 +71,30 @@ Frame frame_for(const LaserLog& log, const MapLayout& layout,
         throw std::invalid_argument("map: a fragment pose is not finite");
     for_each_beam(log, layout, frames, s.max_range,
                   [&](std::size_t, const slam::Pose2& laser, const Eigen::Vector2d& end) {
-                    extend(laser.translation());
-                    extend(end);
+                    e.extend(laser.translation());
+                    e.extend(end);
                   });
-    for (const slam::Pose2& f : frames) extend(f.translation());
+    for (const slam::Pose2& f : frames) e.extend(f.translation());
   }
-  if (!(lo_x <= hi_x)) throw std::invalid_argument("map: nothing to draw");
+  if (!(e.lo_x <= e.hi_x)) throw std::invalid_argument("map: nothing to draw");
+  return e;
+}
+
+/// Pixels of a map of the extent at a resolution (as doubles: no overflow).
+double pixels(const Extent& e, double margin, double resolution) {
+  return std::ceil((e.hi_x - e.lo_x + 2.0 * margin) / resolution) *
+         std::ceil((e.hi_y - e.lo_y + 2.0 * margin) / resolution);
+}
+
+Frame frame_for(const LaserLog& log, const MapLayout& layout,
+                std::span<const std::vector<slam::Pose2>> trials, const MapRenderSettings& s) {
+  const Extent e = extent_of(log, layout, trials, s);
   Frame g;
   g.res = s.resolution;
-  g.x0 = lo_x - s.margin;
-  g.y0 = lo_y - s.margin;
-  const double w = std::ceil((hi_x + s.margin - g.x0) / s.resolution);
-  const double h = std::ceil((hi_y + s.margin - g.y0) / s.resolution);
+  g.x0 = e.lo_x - s.margin;
+  g.y0 = e.lo_y - s.margin;
+  const double w = std::ceil((e.hi_x + s.margin - g.x0) / s.resolution);
+  const double h = std::ceil((e.hi_y + s.margin - g.y0) / s.resolution);
   if (w * h > static_cast<double>(s.max_pixels))
     throw std::invalid_argument("map: " + std::to_string(static_cast<long>(w)) + " x " +
                                 std::to_string(static_cast<long>(h)) +
@@ -179,6 +196,23 @@ void validate(const MapRenderSettings& s) {
     throw std::invalid_argument("map: max_range must be a positive number of metres");
   if (!(s.margin >= 0.0) || !std::isfinite(s.margin))
     throw std::invalid_argument("map: margin must be >= 0");
+  if (s.max_pixels < 10000) throw std::invalid_argument("map: max_pixels must be at least 10000");
+}
+
+double fitting_resolution(const LaserLog& log, const MapLayout& layout,
+                          std::span<const std::vector<slam::Pose2>> trials,
+                          const MapRenderSettings& settings) {
+  validate(settings);
+  const Extent e = extent_of(log, layout, trials, settings);
+  const auto cap = static_cast<double>(settings.max_pixels);
+  if (pixels(e, settings.margin, settings.resolution) <= cap) return settings.resolution;
+  // The area's square root per pixel is a lower bound; whole cells need a little more.
+  double resolution = std::sqrt((e.hi_x - e.lo_x + 2.0 * settings.margin) *
+                                (e.hi_y - e.lo_y + 2.0 * settings.margin) / cap);
+  resolution = std::ceil(resolution * 1000.0) / 1000.0;  // whole millimetres
+  while (pixels(e, settings.margin, resolution) > cap)
+    resolution = std::ceil(resolution * 1010.0) / 1000.0;
+  return resolution;
 }
 
 MapLayout map_layout(const FrontendResult& result) {

@@ -23,8 +23,8 @@ std::string_view to_string(AlignmentCovariance covariance) {
 }
 
 AlignmentCovariance parse_alignment_covariance(std::string_view name) {
-  for (const AlignmentCovariance c : {AlignmentCovariance::accumulated,
-                                      AlignmentCovariance::exit_scan})
+  for (const AlignmentCovariance c :
+       {AlignmentCovariance::accumulated, AlignmentCovariance::exit_scan})
     if (to_string(c) == name) return c;
   throw std::invalid_argument("unknown alignment covariance '" + std::string(name) +
                               "' (accumulated, exit-scan)");
@@ -84,11 +84,23 @@ json result_json(const FrontendResult& r) {
                         {"accepted", a.match.accepted},
                         {"reason", a.match.reason},
                         {"seconds", a.seconds}});
-  return {
-      {"stats", {{"unmatched_scans", r.stats.unmatched}, {"recovered_scans", r.stats.recovered}}},
-      {"fragments", fragments},
-      {"closures", closures},
-      {"closure_attempts", attempts}};
+  json fallbacks = json::array();
+  for (std::size_t i = 0; i < r.scans.size(); ++i)
+    if (!r.scans[i].matched_by_scan())
+      fallbacks.push_back({{"scan", i},
+                           {"stamp", r.trajectory[i].stamp},
+                           {"status", frontend::to_string(r.scans[i].status)},
+                           {"prior_mahalanobis", r.scans[i].prior_mahalanobis},
+                           {"inlier_fraction", r.scans[i].inlier_fraction}});
+  return {{"stats",
+           {{"unmatched_scans", r.stats.unmatched},
+            {"recovered_scans", r.stats.recovered},
+            {"diverged_scans", r.stats.diverged},
+            {"odometry_along_flat_scans", r.stats.odometry_along_flat}}},
+          {"matcher_fallbacks", fallbacks},
+          {"fragments", fragments},
+          {"closures", closures},
+          {"closure_attempts", attempts}};
 }
 
 }  // namespace antslam::frontend

@@ -1,9 +1,13 @@
 #include "frontend/scan_matcher.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "frontend/pose_covariance.hpp"
 
 namespace antslam::frontend {
 
@@ -16,6 +20,22 @@ void require(bool ok, const char* field, const char* what) {
 bool positive(double v) { return v > 0.0 && std::isfinite(v); }
 
 }  // namespace
+
+std::string_view to_string(MatchStatus status) {
+  switch (status) {
+    case MatchStatus::first_scan:
+      return "first scan";
+    case MatchStatus::matched:
+      return "matched";
+    case MatchStatus::recovered:
+      return "recovered";
+    case MatchStatus::too_few_points:
+      return "too few points";
+    case MatchStatus::diverged:
+      return "diverged";
+  }
+  return "?";
+}
 
 void validate(const ScanMatcherSettings& s) {
   require(s.min_range >= 0.0 && std::isfinite(s.min_range), "min_range", "must be >= 0");
@@ -35,13 +55,20 @@ void validate(const ScanMatcherSettings& s) {
           "must be in [0, 10] m");
   require(s.angular_window >= 0.0 && s.angular_window <= 3.2, "angular_window",
           "must be in [0, pi]");
+  require(positive(s.window_sigmas), "window_sigmas", "must be positive");
+  require(s.max_linear_window >= s.linear_window && s.max_linear_window <= 10.0,
+          "max_linear_window", "must be in [linear_window, 10] m");
   require(positive(s.coarse_angular_step), "coarse_angular_step", "must be positive");
   require(positive(s.fine_angular_step), "fine_angular_step", "must be positive");
   require(s.coarse_peaks >= 1 && s.coarse_peaks <= 20, "coarse_peaks", "must be in [1, 20]");
   require(positive(s.temperature), "temperature", "must be positive");
   require(s.prior_weight >= 0.0 && std::isfinite(s.prior_weight), "prior_weight", "must be >= 0");
   require(positive(s.local_map_length), "local_map_length", "must be positive");
-  require(positive(s.odometry_noise), "odometry_noise", "must be positive");
+  validate(s.odometry);
+  require(positive(s.divergence_sigmas), "divergence_sigmas", "must be positive");
+  require(s.trusted_fit >= 0.0 && s.trusted_fit <= 1.0, "trusted_fit", "must be in [0, 1]");
+  require(s.fallback_inflation >= 1.0 && std::isfinite(s.fallback_inflation), "fallback_inflation",
+          "must be >= 1");
   require(positive(s.inlier_distance), "inlier_distance", "must be positive");
   require(s.recovery_fraction >= 0.0 && s.recovery_fraction <= 1.0, "recovery_fraction",
           "must be in [0, 1]");
@@ -116,35 +143,57 @@ Refinement ScanMatcher::search(const Points& points, const slam::Pose2& center, 
                      4.0 * s.fine_angular_step);
 }
 
-MatchResult ScanMatcher::match(const Points& points, const slam::Pose2& prediction) {
+MatchResult ScanMatcher::match(const Points& points, const slam::Pose2& prediction,
+                               const Eigen::Matrix3d& prediction_covariance) {
   const ScanMatcherSettings& s = settings_;
   const DistanceField& fine = submaps_.front().fine;
-  Refinement best = search(points, prediction, s.linear_window, s.angular_window);
+  // The window covers window_sigmas of the prediction's uncertainty, at least the settings'.
+  const double linear_std =
+      std::sqrt(std::max(prediction_covariance(0, 0), prediction_covariance(1, 1)));
+  const double linear =
+      std::clamp(s.window_sigmas * linear_std, s.linear_window, s.max_linear_window);
+  const double angular = std::clamp(s.window_sigmas * std::sqrt(prediction_covariance(2, 2)),
+                                    s.angular_window, std::numbers::pi);
+  Refinement best = search(points, prediction, linear, angular);
   const double fit = inlier_fraction(fine, points, best.pose, s.inlier_distance);
-  bool recovered = false;
+  MatchResult result;
+  result.status = MatchStatus::matched;
   if (fit < s.recovery_fraction) {
     // A poor fit: the odometry may have failed (a stall, a jump); search a wide window.
-    const Refinement wide =
-        search(points, prediction, s.recovery_linear_window, s.recovery_angular_window);
+    const Refinement wide = search(points, prediction, std::max(linear, s.recovery_linear_window),
+                                   std::max(angular, s.recovery_angular_window));
     const double wide_fit = inlier_fraction(fine, points, wide.pose, s.inlier_distance);
     if (wide_fit >= fit + s.recovery_gain) {
       best = wide;
-      recovered = true;
+      result.status = MatchStatus::recovered;
     }
   }
   const LikelihoodModel model{s.sigma, s.temperature};
   const Eigen::Matrix3d guess = laplace_covariance(best.hessian, model, s.posterior);
-  MatchResult result;
   result.gaussian =
       posterior_gaussian(posterior_samples(fine, model, points, best.pose, guess, s.posterior));
   result.best = best.pose;
-  result.matched = true;
   result.points = points.size();
   result.mean_distance = std::sqrt(squared_distance(fine, points, result.pose()) /
                                    static_cast<double>(std::max<std::size_t>(1, points.size())));
   result.inlier_fraction = inlier_fraction(fine, points, result.pose(), s.inlier_distance);
-  result.recovered = recovered;
   return result;
+}
+
+MatchResult ScanMatcher::check_against(MatchResult match, const slam::Gaussian2& prediction) const {
+  const ScanMatcherSettings& s = settings_;
+  const Eigen::Vector3d r = prediction.residual(match.pose());
+  const Eigen::Matrix3d both = prediction.covariance() + match.gaussian.covariance();
+  match.prior_mahalanobis = std::sqrt(r.dot(both.ldlt().solve(r)));
+  if (match.prior_mahalanobis <= s.divergence_sigmas) {
+    match.odometry_along_flat = flatter_than(match.gaussian, prediction);
+    match.gaussian = fuse(match.gaussian, prediction);
+  } else if (match.inlier_fraction < s.trusted_fit) {
+    match.status = MatchStatus::diverged;
+    match.gaussian =
+        slam::Gaussian2(prediction.mean(), s.fallback_inflation * prediction.covariance());
+  }
+  return match;
 }
 
 void ScanMatcher::insert(const Points& points, const slam::Pose2& pose) {
@@ -162,18 +211,19 @@ MatchResult ScanMatcher::add_scan(const LaserScan& scan) {
   if (!last_pose_) {
     result.gaussian = slam::Gaussian2(slam::Pose2{}, Eigen::Matrix3d::Identity() * 1e-12);
   } else {
-    // Odometry prediction: the last estimate moved by the odometry increment.
+    // Odometry prediction: the last estimate moved by the odometry increment, with the step's
+    // covariance in W axes.
     const slam::Pose2 motion = slam::between(last_odometry_, scan.odometry);
-    const slam::Pose2 prediction = *last_pose_ * motion;
+    const slam::Gaussian2 prediction(
+        *last_pose_ * motion, compose_covariance(*last_pose_, Eigen::Matrix3d::Zero(), motion,
+                                                 step_covariance(s.odometry, motion)));
     if (thinned.size() >= s.min_points) {
-      result = match(thinned, prediction);
+      result =
+          check_against(match(thinned, prediction.mean(), prediction.covariance()), prediction);
     } else {
-      const double d = std::hypot(motion.x, motion.y);
-      const double linear = s.odometry_noise * d + 0.01;
-      const double angular = s.odometry_noise * (std::abs(motion.theta) + d) + 0.01;
-      result.gaussian = slam::Gaussian2(
-          prediction,
-          Eigen::Vector3d(linear * linear, linear * linear, angular * angular).asDiagonal());
+      result.status = MatchStatus::too_few_points;
+      result.gaussian =
+          slam::Gaussian2(prediction.mean(), s.fallback_inflation * prediction.covariance());
       result.points = thinned.size();
     }
     travelled_ += std::hypot(result.pose().x - last_pose_->x, result.pose().y - last_pose_->y);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <unordered_set>
 
+#include "frontend/distance_field.hpp"
+
 namespace antslam::frontend {
 
 ScanSurfaces scan_surfaces(const LaserScan& scan, double min_range, double max_range,
@@ -62,11 +64,11 @@ Points thin_points(std::span<const Eigen::Vector2d> points, double spacing) {
   Points kept;
   std::unordered_set<std::uint64_t> cells;
   cells.reserve(points.size());
+  // The low 32 bits of the cell indices: exact while the points span fewer than 2^32 cells
+  // (2e8 m at 5 cm), as the points of a scan or a fragment do.
   for (const Eigen::Vector2d& p : points) {
-    const auto x =
-        static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(p.x() / spacing)));
-    const auto y =
-        static_cast<std::uint32_t>(static_cast<std::int32_t>(std::floor(p.y() / spacing)));
+    const auto x = static_cast<std::uint32_t>(floor_index(p.x() / spacing));
+    const auto y = static_cast<std::uint32_t>(floor_index(p.y() / spacing));
     if (cells.insert((std::uint64_t{x} << 32U) | y).second) kept.push_back(p);
   }
   return kept;

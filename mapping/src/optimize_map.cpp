@@ -17,6 +17,7 @@ slam::OptimizeSettings default_mapping_optimizer() {
 void validate(const MappingSettings& s) {
   if (s.trials < 1) throw std::invalid_argument("mapping: trials must be >= 1");
   slam::validate(s.optimize);
+  validate(s.closing);
 }
 
 std::vector<ClosureResidual> closure_residuals(const slam::FragmentSet& set,
@@ -47,8 +48,14 @@ MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& 
   r.scan_matcher = slam::score(set, means);
   r.scan_matcher_frames = slam::chain(means);
   r.before = closure_residuals(set, r.scan_matcher_frames);
-  r.after = closure_residuals(set, r.trials[r.best].frames);
-  r.corrected = slam::world_trajectory(set, r.trials[r.best].frames);
+  r.frames = r.trials[r.best].frames;
+  if (settings.closing.enabled) {
+    r.closing = close_loops(set, r.frames, settings.closing);
+    r.frames = r.closing->frames;
+  }
+  r.scores = slam::score(set, slam::relative_alignments(r.frames));
+  r.after = closure_residuals(set, r.frames);
+  r.corrected = slam::world_trajectory(set, r.frames);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -1,6 +1,7 @@
 #include "mapping/pipeline.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -19,21 +20,31 @@ void report(const StageObserver& observer, std::string_view stage, bool final) {
   if (observer) observer(stage, final);
 }
 
-PipelineMaps draw_maps(const PipelineResult& r, const frontend::MapRenderSettings& settings,
+/// The three maps at the finest resolution that fits the pixel cap (the same for all three).
+PipelineMaps draw_maps(PipelineResult& r, frontend::MapRenderSettings settings,
                        const StageObserver& observer) {
   const frontend::MapLayout layout = frontend::map_layout(r.frontend);
   const MappingResult& m = r.mapping;
+  std::vector<std::vector<slam::Pose2>> placements{m.scan_matcher_frames};
+  for (const slam::OptimizeResult& t : m.trials) placements.push_back(t.frames);
+  const double wanted = settings.resolution;
+  settings.resolution = frontend::fitting_resolution(r.log, layout, placements, settings);
+  if (settings.resolution > wanted) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "maps drawn at %.3f m per pixel: at %.3f m they would exceed %zu pixels",
+                  settings.resolution, wanted, settings.max_pixels);
+    r.warnings.emplace_back(line);
+  }
   report(observer, "maps: scan matcher", true);
   frontend::Image scan_matcher =
       frontend::render_map(r.log, layout, m.scan_matcher_frames, settings);
   report(observer, "maps: optimized", true);
-  frontend::Image optimized =
-      frontend::render_map(r.log, layout, m.trials[m.best].frames, settings);
+  frontend::Image optimized = frontend::render_map(r.log, layout, m.frames, settings);
   report(observer, "maps: average of " + std::to_string(m.trials.size()) + " trials", true);
-  std::vector<std::vector<slam::Pose2>> placements;
-  for (const slam::OptimizeResult& t : m.trials) placements.push_back(t.frames);
+  placements.erase(placements.begin());
   return {std::move(scan_matcher), std::move(optimized),
-          frontend::render_average_map(r.log, layout, placements, settings)};
+          frontend::render_average_map(r.log, layout, placements, settings), settings.resolution};
 }
 
 }  // namespace
@@ -51,6 +62,7 @@ PipelineResult run_pipeline(frontend::LaserLog log, const PipelineSettings& sett
   validate(settings);
   PipelineResult r;
   r.log = std::move(log);
+  r.warnings = r.log.warnings;
 
   const auto frontend_start = Clock::now();
   r.frontend =
@@ -73,9 +85,17 @@ PipelineResult run_pipeline(frontend::LaserLog log, const PipelineSettings& sett
            done == settings.mapping.trials);
   });
   r.times.optimization_s = r.mapping.seconds;
+  r.verdict = judge(r.frontend, r.mapping);
 
+  // A run never dies for a picture: whatever goes wrong with the maps is a warning.
   const auto maps_start = Clock::now();
-  if (settings.draw_maps) r.maps = draw_maps(r, settings.map, observer);
+  if (settings.draw_maps) {
+    try {
+      r.maps = draw_maps(r, settings.map, observer);
+    } catch (const std::exception& e) {
+      r.warnings.push_back(std::string("maps not drawn: ") + e.what());
+    }
+  }
   r.times.maps_s = seconds_since(maps_start);
 
   if (reference) {

@@ -49,18 +49,28 @@ json optimization_json(const slam::FragmentSet& set, const MappingSettings& sett
     trials.push_back(entry);
   }
   const slam::OptimizeResult& best = r.trials[r.best];
+  const std::vector<slam::Pose2> map_alignments = slam::relative_alignments(r.frames);
   json alignments = json::array();
-  for (std::size_t i = 0; i < best.alignments.size(); ++i) {
+  for (std::size_t i = 0; i < map_alignments.size(); ++i) {
     const slam::Gaussian2& g = *set.fragments[i + 1].alignment;
-    const Eigen::Vector3d d = g.residual(best.alignments[i]);
+    const Eigen::Vector3d d = g.residual(map_alignments[i]);
     const double m2 = d.dot(g.information() * d);
     alignments.push_back({{"fragment", i + 1},
-                          {"pose", pose_json(best.alignments[i])},
+                          {"pose", pose_json(map_alignments[i])},
                           {"mahalanobis", std::sqrt(m2)},
                           {"term", 1.0 - std::exp(-0.5 * m2)}});
   }
   json frames = json::array();
-  for (const slam::Pose2& f : best.frames) frames.push_back(pose_json(f));
+  for (const slam::Pose2& f : r.frames) frames.push_back(pose_json(f));
+  json closing = {{"enabled", r.closing.has_value()}};
+  if (r.closing) {
+    json distrusted = json::array();
+    for (std::size_t c = 0; c < set.closures.size(); ++c)
+      if (!r.closing->trusted[c])
+        distrusted.push_back({{"from", set.closures[c].from}, {"to", set.closures[c].to}});
+    closing["solves"] = r.closing->solves;
+    closing["distrusted"] = distrusted;
+  }
   return {{"method", slam::to_string(s.method)},
           {"seed", s.seed},
           {"trials", r.trials.size()},
@@ -71,6 +81,8 @@ json optimization_json(const slam::FragmentSet& set, const MappingSettings& sett
           {"scan_matcher", scores_json(r.scan_matcher)},
           {"best_trial", r.best},
           {"best", scores_json(best.scores)},
+          {"closing", closing},
+          {"map", scores_json(r.scores)},
           {"weight", statistics_json(slam::statistics(weights))},
           {"chi2", statistics_json(slam::statistics(chi2))},
           {"elapsed_s", statistics_json(slam::statistics(seconds))},
@@ -88,6 +100,7 @@ json closures_json(const slam::FragmentSet& set, const MappingResult& r) {
                    {"hypothesis", gaussian_json(set.closures[c].hypothesis)},
                    {"scan_matcher", residual_json(r.before[c])},
                    {"optimized", residual_json(r.after[c])},
+                   {"trusted", !r.closing || r.closing->trusted[c]},
                    {"within_2_sigma", r.after[c].mahalanobis <= kClosureSigmas}});
   return out;
 }
@@ -98,6 +111,21 @@ json evaluation_json(const MapEvaluation& e) {
           {"optimized", eval::to_json(e.optimized)}};
 }
 
+json verdict_json(const slam::FragmentSet& set, const Verdict& v) {
+  json outside = json::array();
+  for (const std::size_t c : v.outside)
+    outside.push_back({{"from", set.closures[c].from}, {"to", set.closures[c].to}});
+  return {{"doubtful", v.doubtful},
+          {"closures", v.closures},
+          {"closures_outside_2_sigma", outside},
+          {"largest_closure_mahalanobis", v.largest_closure},
+          {"scans", v.scans},
+          {"odometry_fallbacks", v.fallbacks},
+          {"largest_alignment_mahalanobis", v.largest_alignment},
+          {"largest_alignment_fragment", v.largest_alignment_fragment},
+          {"line", v.line}};
+}
+
 json report_json(const std::string& log_path, const PipelineSettings& settings,
                  const PipelineResult& r) {
   const slam::FragmentSet& set = r.frontend.fragment_set;
@@ -106,6 +134,9 @@ json report_json(const std::string& log_path, const PipelineSettings& settings,
   report["optimization"] = optimization_json(set, settings.mapping, r.mapping);
   report["closures"] = closures_json(set, r.mapping);
   if (r.evaluation) report["evaluation"] = evaluation_json(*r.evaluation);
+  if (r.maps) report["maps"] = {{"resolution_m", r.maps->resolution}};
+  report["warnings"] = r.warnings;
+  report["verdict"] = verdict_json(set, r.verdict);
   report["times"] = {{"read_s", r.times.read_s},
                      {"frontend_s", r.times.frontend_s},
                      {"scan_matching_s", r.frontend.stats.matching_seconds},

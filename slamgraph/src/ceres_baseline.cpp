@@ -1,12 +1,17 @@
 #include "slamgraph/ceres_baseline.hpp"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <stdexcept>
 
 #include "ceres_residual.hpp"
 
 namespace antslam::slam {
+
+void show_solver_logs(bool show) {
+  FLAGS_minloglevel = show ? google::GLOG_INFO : google::GLOG_FATAL;
+}
 
 CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> initial, bool robust,
                                 const CeresSettings& settings) {

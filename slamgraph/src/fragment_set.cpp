@@ -1,5 +1,6 @@
 #include "slamgraph/fragment_set.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -9,8 +10,24 @@ namespace antslam::slam {
 
 namespace {
 
+/// Finite, and within kMaxCoordinate (the heading too: an angle of 1e9 rad is no angle).
 bool finite(const Pose2& p) {
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta);
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.theta) &&
+         std::max({std::abs(p.x), std::abs(p.y), std::abs(p.theta)}) <= kMaxCoordinate;
+}
+
+bool finite(const StampedPose& p) {
+  return finite(p.pose) && std::isfinite(p.stamp) && std::abs(p.stamp) <= kMaxTimestamp;
+}
+
+/// Why a Gaussian of the set is unusable, or empty.
+std::string gaussian_problem(const Gaussian2& g) {
+  if (!finite(g.mean())) return ".mean is not finite or beyond 1e9";
+  if (g.covariance().diagonal().maxCoeff() > kMaxVariance)
+    return ".covariance has a variance above 1e18";
+  if (g.information().diagonal().maxCoeff() > kMaxInformation)
+    return ".covariance is too small (its inverse has an entry above 1e18)";
+  return {};
 }
 
 [[noreturn]] void fail(const std::string& message) { throw std::invalid_argument(message); }
@@ -33,17 +50,20 @@ void validate(const FragmentSet& set) {
   for (std::size_t i = 0; i < n; ++i) {
     const Fragment& f = set.fragments[i];
     const std::string where = "fragments[" + std::to_string(i) + "]";
-    if (!finite(f.exit)) fail(where + ".exit is not finite");
+    if (!finite(f.exit)) fail(where + ".exit is not finite or beyond 1e9");
     for (std::size_t k = 0; k < f.trajectory.size(); ++k)
-      if (!finite(f.trajectory[k].pose) || !std::isfinite(f.trajectory[k].stamp))
-        fail(where + ".trajectory[" + std::to_string(k) + "] is not finite");
+      if (!finite(f.trajectory[k]))
+        fail(where + ".trajectory[" + std::to_string(k) + "] is not finite or beyond 1e9");
     if (i == 0) continue;
     if (!f.alignment) fail(where + ".alignment is missing");
+    if (const std::string p = gaussian_problem(*f.alignment); !p.empty())
+      fail(where + ".alignment" + p);
     if (f.samples.empty()) fail(where + ".samples is empty");
     if (f.samples.size() > std::numeric_limits<std::uint32_t>::max())
       fail(where + ".samples has more than 2^32 - 1 entries");
     for (std::size_t j = 0; j < f.samples.size(); ++j)
-      if (!finite(f.samples[j])) fail(where + ".samples[" + std::to_string(j) + "] is not finite");
+      if (!finite(f.samples[j]))
+        fail(where + ".samples[" + std::to_string(j) + "] is not finite or beyond 1e9");
   }
   if (set.closures.empty()) fail("a fragment set needs at least one loop closure");
   for (std::size_t c = 0; c < set.closures.size(); ++c) {
@@ -51,13 +71,16 @@ void validate(const FragmentSet& set) {
     const std::string where = "closures[" + std::to_string(c) + "]";
     if (lc.to >= n) fail(where + ".to = " + std::to_string(lc.to) + " is out of range");
     if (lc.from >= lc.to) fail(where + ".from must be smaller than .to");
-    if (!finite(lc.anchor)) fail(where + ".anchor is not finite");
+    if (!finite(lc.anchor)) fail(where + ".anchor is not finite or beyond 1e9");
+    if (const std::string p = gaussian_problem(lc.hypothesis); !p.empty())
+      fail(where + ".hypothesis" + p);
   }
   if (!set.reference.empty() && set.reference.size() != n)
     fail("reference has " + std::to_string(set.reference.size()) + " poses, expected " +
          std::to_string(n));
   for (std::size_t i = 0; i < set.reference.size(); ++i)
-    if (!finite(set.reference[i])) fail("reference[" + std::to_string(i) + "] is not finite");
+    if (!finite(set.reference[i]))
+      fail("reference[" + std::to_string(i) + "] is not finite or beyond 1e9");
 }
 
 std::vector<Pose2> chosen_alignments(const FragmentSet& set,

@@ -8,6 +8,7 @@
 
 #include "json_reader.hpp"
 #include "json_writer.hpp"
+#include "text_lines.hpp"
 
 namespace antslam::slam {
 
@@ -67,6 +68,17 @@ LoopClosure read_closure(const JsonField& field, std::size_t fragments) {
 
 }  // namespace
 
+double fragment_set_bytes(std::size_t fragments, std::size_t samples_per_fragment,
+                          std::size_t trajectory_poses_per_fragment) {
+  // A JSON array of n numbers takes about 32 + 24 n bytes (nlohmann), next to the poses.
+  constexpr double kPerPose = sizeof(Pose2) + 32.0 + 24.0 * 3.0;
+  constexpr double kPerStampedPose = sizeof(StampedPose) + 32.0 + 24.0 * 4.0;
+  constexpr double kPerFragment = sizeof(Fragment) + sizeof(Gaussian2) + 1024.0;
+  return static_cast<double>(fragments) *
+         (kPerFragment + static_cast<double>(samples_per_fragment) * kPerPose +
+          static_cast<double>(trajectory_poses_per_fragment) * kPerStampedPose);
+}
+
 void write_fragment_set(std::ostream& out, const FragmentSet& set) {
   validate(set);
   json doc = {{"format", kFragmentSetFormat}, {"version", kFragmentSetVersion}, {"name", set.name}};
@@ -124,8 +136,7 @@ FragmentSet read_fragment_set(std::istream& in, const std::string& source) {
 }
 
 FragmentSet read_fragment_set_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::ifstream in = detail::open_input(path);
   return read_fragment_set(in, path.string());
 }
 

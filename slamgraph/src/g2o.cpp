@@ -191,8 +191,7 @@ PoseGraph read_g2o(std::istream& in, const std::string& source) {
 }
 
 PoseGraph read_g2o_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::ifstream in = detail::open_input(path);
   return read_g2o(in, path.string());
 }
 
@@ -216,8 +215,7 @@ std::vector<Pose2> read_reference_poses(const std::filesystem::path& path) {
     for (const StampedPose& p : read_tum_file(path)) poses.push_back(p.pose);
     return poses;
   }
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::ifstream in = detail::open_input(path);
   return read_pose_lines(in, path.string());
 }
 

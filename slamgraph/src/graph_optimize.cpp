@@ -73,14 +73,19 @@ OptimizeResult optimize_on_graph(const PoseGraph& graph, const std::string& sour
     const std::vector<double> x = objective.pack(graph.vertices);
     std::vector<double> lower, upper;
     graph_box(graph, x, lower, upper);
+    RefineSettings refine = refine_settings(settings);
+    refine.time_limit_s =
+        detail::stage_budget(settings.time_limit_s, recorder.elapsed(), refine.time_limit_s);
     const detail::StagedMinimum m =
-        detail::NloptStages<GraphObjective>(objective, refine_settings(settings))
-            .run(x, lower, upper);
+        detail::NloptStages<GraphObjective>(objective, refine).run(x, lower, upper);
     result.frames = objective.unpack(m.x);
     result.evaluations = static_cast<std::uint64_t>(m.evaluations);
   } else {
-    const CeresResult c = detail::optimize_graph_with_ceres(
-        graph, settings.method == Method::ceres_robust, settings.ceres);
+    CeresSettings ceres = settings.ceres;
+    ceres.time_limit_s =
+        detail::stage_budget(settings.time_limit_s, recorder.elapsed(), ceres.time_limit_s);
+    const CeresResult c =
+        detail::optimize_graph_with_ceres(graph, settings.method == Method::ceres_robust, ceres);
     result.frames = c.frames;
     result.iterations = static_cast<std::uint64_t>(c.iterations);
   }

@@ -5,15 +5,28 @@
 
 namespace antslam::slam::detail {
 
+namespace {
+
+/// nlohmann's message without its "[json.exception.parse_error.101] " prefix.
+std::string plain_message(const nlohmann::json::exception& e) {
+  std::string what = e.what();
+  const auto bracket = what.find("] ");
+  if (what.starts_with("[json.exception") && bracket != std::string::npos)
+    what = what.substr(bracket + 2);
+  return what;
+}
+
+}  // namespace
+
 nlohmann::json parse_json(std::string_view text, const std::string& source) {
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    std::string what = e.what();
-    const auto bracket = what.find("] ");
-    if (what.starts_with("[json.exception") && bracket != std::string::npos)
-      what = what.substr(bracket + 2);
-    throw std::runtime_error(source + ": JSON syntax error: " + what);
+    // nlohmann's message names the line and column.
+    throw std::runtime_error(source + ": JSON syntax error: " + plain_message(e));
+  } catch (const nlohmann::json::exception& e) {
+    // e.g. a number too large for a double ("number overflow parsing '1e400'").
+    throw std::runtime_error(source + ": JSON: " + plain_message(e));
   }
 }
 

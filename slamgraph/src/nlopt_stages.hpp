@@ -40,6 +40,7 @@ class NloptStages {
 
   /// Plain NLopt from x, then (settings.graduated) the stages s_0 = sqrt(chi2 of x) >= every
   /// term's Mahalanobis distance, s_0 / f, ..., 1; the result with the lower eq. (10) weight.
+  /// No stage starts once settings.time_limit_s is spent.
   StagedMinimum run(const std::vector<double>& x, const std::vector<double>& lower,
                     const std::vector<double>& upper) {
     began_ = std::chrono::steady_clock::now();
@@ -48,15 +49,17 @@ class NloptStages {
     result.start = objective_->evaluate(x);
     result.x = minimise(x, lower, upper, result.evaluations);
     result.scores = objective_->evaluate(result.x);
-    if (settings_.graduated) {
+    if (settings_.graduated && !spent()) {
       double width = std::max(1.0, std::sqrt(result.start.chi2));
       std::vector<double> point = x;
       for (;;) {
+        if (spent()) break;
         objective_->set_kernel_width(width);
         point = minimise(point, lower, upper, result.evaluations);
         if (width == 1.0) break;
         width = std::max(1.0, width / settings_.graduation_factor);
       }
+      objective_->set_kernel_width(1.0);  // the stages may have ended early, at a wider kernel
       const Scores graduated = objective_->evaluate(point);
       if (graduated.weight < result.scores.weight) {
         result.x = point;
@@ -96,6 +99,13 @@ class NloptStages {
     if (settings_.time_limit_s <= 0.0) return 0.0;
     const std::chrono::duration<double> used = std::chrono::steady_clock::now() - began_;
     return std::max(1e-6, settings_.time_limit_s - used.count());
+  }
+
+  /// Whether the time budget is used up (never without one).
+  bool spent() const {
+    return settings_.time_limit_s > 0.0 &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count() >=
+               settings_.time_limit_s;
   }
 
   /// NLopt from x in the box on the objective at its current width; the best point evaluated.

@@ -13,8 +13,6 @@
 
 namespace antslam::slam {
 
-constexpr std::size_t kMaxAnts = 100000;
-
 void validate(const OptimizeSettings& s) {
   const auto require = [](bool ok, const char* what) {
     if (!ok) throw std::invalid_argument(std::string("optimize: ") + what);
@@ -142,15 +140,21 @@ OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings
       settings.initial.empty() ? mean_alignments(set) : settings.initial;
   switch (settings.method) {
     case Method::nlopt: {
-      const RefineResult r = Refiner(set, refine_settings(settings)).refine(start);
+      const RefineResult r =
+          Refiner(set, refine_settings(settings))
+              .refine(start, detail::stage_budget(settings.time_limit_s, recorder.elapsed(),
+                                                  settings.refine.time_limit_s));
       result.alignments = r.alignments;
       result.evaluations = static_cast<std::uint64_t>(r.evaluations);
       break;
     }
     case Method::ceres:
     case Method::ceres_robust: {
+      CeresSettings ceres = settings.ceres;
+      ceres.time_limit_s =
+          detail::stage_budget(settings.time_limit_s, recorder.elapsed(), ceres.time_limit_s);
       const CeresResult r =
-          optimize_with_ceres(set, start, settings.method == Method::ceres_robust, settings.ceres);
+          optimize_with_ceres(set, start, settings.method == Method::ceres_robust, ceres);
       result.alignments = relative_alignments(r.frames);
       result.iterations = static_cast<std::uint64_t>(r.iterations);
       break;

@@ -16,9 +16,10 @@ class PathRefiner {
   PathRefiner(const FragmentSet& set, const RefineSettings& settings)
       : set_(&set), refiner_(set, settings) {}
 
-  /// Refines the path; returns the best weight of any refined path so far.
-  double refine(std::span<const std::uint32_t> path, std::uint64_t& evaluations) {
-    const RefineResult r = refiner_.refine(chosen_alignments(*set_, path));
+  /// Refines the path within `seconds` (0 = no limit); returns the best weight of any refined
+  /// path so far.
+  double refine(std::span<const std::uint32_t> path, double seconds, std::uint64_t& evaluations) {
+    const RefineResult r = refiner_.refine(chosen_alignments(*set_, path), seconds);
     evaluations += static_cast<std::uint64_t>(r.evaluations);
     if (!best_ || r.scores.weight < best_->scores.weight) {
       best_ = r;
@@ -52,12 +53,17 @@ void run_aco(const FragmentSet& set, const OptimizeSettings& settings, Recorder&
   if (refine) refiner.emplace(set, refine_settings(settings));
   const std::uint64_t ants = aco::colony_settings(p, problem.layer_count(), false, false).ants;
   std::uint64_t refine_evaluations = 0;
+  // A refinement gets what is left of the run's budget (ants and refinement share it).
+  const auto refine_seconds = [&] {
+    return stage_budget(settings.time_limit_s, recorder.elapsed(), settings.refine.time_limit_s);
+  };
 
   const auto observe = [&](const aco::IterationReport& r) {
     if (!r.improved) return;
     double best = r.global_best;
     if (refine && settings.refine_each_improvement)
-      best = std::min(best, refiner->refine(r.global_best_path, refine_evaluations));
+      best =
+          std::min(best, refiner->refine(r.global_best_path, refine_seconds(), refine_evaluations));
     recorder.improve(r.iteration, r.iteration * ants + refine_evaluations, best);
   };
   const aco::RunResult run_result =
@@ -72,7 +78,7 @@ void run_aco(const FragmentSet& set, const OptimizeSettings& settings, Recorder&
     // Algorithm 2 returns S_best (line 36); NLopt then refines it continuously (already done
     // when every new global best was refined).
     if (!settings.refine_each_improvement) {
-      const double best = refiner->refine(result.choice, refine_evaluations);
+      const double best = refiner->refine(result.choice, refine_seconds(), refine_evaluations);
       recorder.improve(result.iterations, result.iterations * ants + refine_evaluations, best);
     }
     result.choice = refiner->start();

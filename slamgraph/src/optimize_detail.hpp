@@ -2,6 +2,7 @@
 // Shared by the optimize*.cpp files: the clock and convergence record of one run, and the
 // method runners.
 
+#include <algorithm>
 #include <chrono>
 
 #include "slamgraph/optimize.hpp"
@@ -34,6 +35,15 @@ class Recorder {
   const OptimizeObserver* observer_;
   std::chrono::steady_clock::time_point start_;
 };
+
+/// The seconds a stage may take: what is left of the run's budget `limit_s` after `used_s`, or
+/// the stage's own limit `own_s` if smaller (0 = no limit, for both and for the result; a spent
+/// budget leaves a microsecond, so that the stage stops at once rather than never).
+inline double stage_budget(double limit_s, double used_s, double own_s) {
+  if (limit_s <= 0.0) return own_s;
+  const double left = std::max(1e-6, limit_s - used_s);
+  return own_s > 0.0 ? std::min(own_s, left) : left;
+}
 
 /// The ACO methods (with hybrid+nlopt's refinement). Fills choice, alignments, iterations,
 /// evaluations and the convergence record.

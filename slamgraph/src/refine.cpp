@@ -84,6 +84,11 @@ Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
 }
 
 RefineResult Refiner::refine(std::span<const Pose2> start) {
+  return refine(start, settings_.time_limit_s);
+}
+
+RefineResult Refiner::refine(std::span<const Pose2> start, double seconds) {
+  if (!(seconds >= 0.0)) throw std::invalid_argument("refine: time limit must be >= 0");
   std::vector<double> x = AlignmentObjective::pack(start);
   if (x.size() != objective_.dimension())
     throw std::invalid_argument("refine: got " + std::to_string(start.size()) +
@@ -98,8 +103,10 @@ RefineResult Refiner::refine(std::span<const Pose2> start) {
       upper[d] = std::max(upper[d], x[d]);
     }
   }
+  RefineSettings budgeted = settings_;
+  budgeted.time_limit_s = seconds;
   const detail::StagedMinimum m =
-      detail::NloptStages<AlignmentObjective>(objective_, settings_).run(x, lower, upper);
+      detail::NloptStages<AlignmentObjective>(objective_, budgeted).run(x, lower, upper);
   RefineResult result;
   result.alignments = AlignmentObjective::unpack(m.x);
   result.start = m.start;

@@ -80,11 +80,13 @@ SearchResult random_search(const SlamProblem& problem, std::uint64_t iterations,
                            std::uint64_t seed, double time_limit_s, const SearchObserver& observer,
                            std::stop_token stop) {
   if (paths == 0) throw std::invalid_argument("random search needs at least one path per round");
+  if (iterations == 0 && !(time_limit_s > 0.0))
+    throw std::invalid_argument("random search: set rounds or a time limit");
   const auto start = std::chrono::steady_clock::now();
   SearchResult result;
   result.weight = std::numeric_limits<double>::infinity();
   std::vector<std::uint32_t> choice(problem.layer_count());
-  for (std::uint64_t t = 1; t <= iterations; ++t) {
+  for (std::uint64_t t = 1; iterations == 0 || t <= iterations; ++t) {  // 0 rounds: no limit
     bool improved = false;
     for (std::size_t p = 0; p < paths; ++p) {
       aco::Rng rng = aco::ant_stream(seed, t, p);

@@ -79,15 +79,22 @@ SynthSettings synth_preset(std::string_view name) {
 }
 
 FragmentSet synthesize(const SynthSettings& s) {
-  check(s.fragments >= 2, "fragments must be >= 2");
-  check(s.samples >= 1, "samples must be >= 1");
-  check(s.laps >= 1, "laps must be >= 1");
-  check(s.loop_length_m > 0.0 && std::isfinite(s.loop_length_m), "loop length must be > 0");
-  check(s.aspect > 0.0 && std::isfinite(s.aspect), "aspect must be > 0");
-  check(s.sigma_xy > 0.0 && s.sigma_theta > 0.0, "alignment sigmas must be > 0");
-  check(s.closure_sigma_xy > 0.0 && s.closure_sigma_theta > 0.0, "closure sigmas must be > 0");
+  check(s.fragments >= 2 && s.fragments <= kMaxSynthFragments, "fragments must be in [2, 1000000]");
+  check(s.samples >= 1 && s.samples <= kMaxSynthSamples, "samples must be in [1, 1000000]");
+  check(s.laps >= 1 && s.laps <= 1000, "laps must be in [1, 1000]");
+  check(s.laps == 1 || s.fragments <= kMaxRevisitFragments,
+        "more than one lap checks every pair of fragments for a revisit: at most 20000 fragments");
+  check(s.loop_length_m > 0.0 && s.loop_length_m <= 1e6, "loop length must be in (0, 1e6] m");
+  check(s.aspect >= 1e-3 && s.aspect <= 1e3, "aspect must be in [0.001, 1000]");
+  check(s.sigma_xy > 0.0 && s.sigma_xy <= 1e3 && s.sigma_theta > 0.0 && s.sigma_theta <= 10.0,
+        "alignment sigmas must be in (0, 1000] m and (0, 10] rad");
+  check(s.closure_sigma_xy > 0.0 && s.closure_sigma_xy <= 1e3 && s.closure_sigma_theta > 0.0 &&
+            s.closure_sigma_theta <= 10.0,
+        "closure sigmas must be in (0, 1000] m and (0, 10] rad");
   check(s.correlation > -0.5 && s.correlation < 1.0, "correlation must be in (-0.5, 1)");
-  check(s.revisit_radius_m >= 0.0, "revisit radius must be >= 0");
+  check(s.revisit_radius_m >= 0.0 && s.revisit_radius_m <= s.loop_length_m,
+        "revisit radius must be in [0, loop length]");
+  check(s.trajectory_poses <= 10000, "trajectory poses must be at most 10000 per fragment");
 
   const Rectangle path(s.loop_length_m, s.aspect);
   const std::size_t n = s.fragments;
@@ -131,12 +138,20 @@ FragmentSet synthesize(const SynthSettings& s) {
          Gaussian2(perturb(truth, closure_noise, noise_rng, s.noise_free), closure_cov)});
   };
   close(0, n - 1, set.fragments[n - 1].exit);  // the paper's loop: E_N back at the start
-  for (std::size_t b = 2; b < n; ++b)
-    for (std::size_t a = 0; a + 2 <= b; ++a) {
-      if (a == 0 && b == n - 1) continue;
-      const Pose2 d = between(set.reference[a], set.reference[b]);
-      if (std::hypot(d.x, d.y) < s.revisit_radius_m && s.laps > 1) close(a, b, Pose2{});
-    }
+  // With several laps, every revisit closes a loop: count them first, then make them.
+  const auto for_each_revisit = [&](auto&& f) {
+    for (std::size_t b = 2; b < n && s.laps > 1; ++b)
+      for (std::size_t a = 0; a + 2 <= b; ++a) {
+        if (a == 0 && b == n - 1) continue;
+        const Pose2 d = between(set.reference[a], set.reference[b]);
+        if (std::hypot(d.x, d.y) < s.revisit_radius_m) f(a, b);
+      }
+  };
+  std::size_t revisits = 0;
+  for_each_revisit([&](std::size_t, std::size_t) { ++revisits; });
+  check(revisits <= kMaxSynthClosures,
+        "the revisit radius makes more than 1000000 loop closures; choose a smaller one");
+  for_each_revisit([&](std::size_t a, std::size_t b) { close(a, b, Pose2{}); });
   return set;
 }
 

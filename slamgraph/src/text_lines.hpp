@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <istream>
 #include <sstream>
 #include <stdexcept>
@@ -15,6 +17,10 @@ namespace antslam::slam::detail {
                                  const std::string& problem) {
   throw std::runtime_error(source + ":" + std::to_string(line) + ": " + problem);
 }
+
+/// Opens an input file; throws std::runtime_error "path: is a directory" or "path: cannot open"
+/// (a directory would open, and fail only on the first read with the library's own words).
+std::ifstream open_input(const std::filesystem::path& path);
 
 /// Whole-token number, accepting nan/inf so that they can be reported as non-finite.
 bool parse_number(const std::string& token, double& value);

@@ -54,6 +54,14 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
       settings, trials, observer, convergence);
 }
 
+double trial_result_bytes(std::size_t poses) {
+  constexpr double kConvergencePoints = 64;  // improvements recorded per trial, typically
+  const auto n = static_cast<double>(poses);
+  return static_cast<double>(sizeof(OptimizeResult)) +
+         n * (2.0 * sizeof(Pose2) + sizeof(std::uint32_t)) +
+         kConvergencePoints * sizeof(ConvergencePoint);
+}
+
 std::size_t best_trial(std::span<const OptimizeResult> trials) {
   if (trials.empty()) throw std::invalid_argument("best_trial: no trials");
   std::size_t best = 0;

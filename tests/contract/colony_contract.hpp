@@ -12,6 +12,7 @@
 //   LocalSearch local_search() const;        (aco::NoLocalSearch for none)
 //   bool feasible(std::span<const std::uint32_t> path) const;
 //   static constexpr std::size_t kIterations;
+// and optionally static void configure(aco::Parameters&) (e.g. focused construction).
 
 #include <gtest/gtest.h>
 
@@ -60,6 +61,7 @@ ContractOutcome run_checked(const Fixture& fixture, aco::Variant variant, const 
   p.variant = variant;
   p.ants = 12;
   p.seed = 2024;
+  if constexpr (requires { Fixture::configure(p); }) Fixture::configure(p);
   const auto& problem = fixture.problem();
   return aco::with_colony(
       problem, p, aco::make_backend(spec.kind, spec.threads), fixture.local_search(),

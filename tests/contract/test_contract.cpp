@@ -1,6 +1,7 @@
 // The colony contract (colony_contract.hpp) on every real problem the project ships: the
-// synthetic layered problem of the engine, the TSP without and with each local search, and the
-// AntSLAM problem of eq. (10) on the paper's N = 9 set.
+// synthetic layered problem of the engine, the TSP without and with each local search, with
+// both constructions (from nothing and focused), and the AntSLAM problem of eq. (10) on the
+// paper's N = 9 set.
 
 #include <algorithm>
 #include <cstdint>
@@ -60,6 +61,15 @@ struct Tsp {
   }
 };
 
+/// The same with focused construction: from the second iteration ants change a source tour (the
+/// best-so-far one in a third of the iterations) in at least 3 edges.
+template <tsp::LocalSearchKind Kind>
+struct TspFocused : Tsp<Kind> {
+  static void configure(aco::Parameters& p) {
+    p.focused = {.min_new_edges = 3, .global_best_source = 0.3};
+  }
+};
+
 /// The AntSLAM problem (eq. 10) on the paper's N = 9 synthetic set, M = 20 samples.
 struct Slam {
   static constexpr std::size_t kIterations = 40;
@@ -79,12 +89,16 @@ using TspNoLocalSearch = Tsp<tsp::LocalSearchKind::none>;
 using TspTwoOpt = Tsp<tsp::LocalSearchKind::two_opt>;
 using TspTwoHalfOpt = Tsp<tsp::LocalSearchKind::two_half_opt>;
 using TspThreeOpt = Tsp<tsp::LocalSearchKind::three_opt>;
+using TspFocusedNoLocalSearch = TspFocused<tsp::LocalSearchKind::none>;
+using TspFocusedThreeOpt = TspFocused<tsp::LocalSearchKind::three_opt>;
 
 ANTSLAM_COLONY_CONTRACT(SyntheticLayered, SyntheticLayered);
 ANTSLAM_COLONY_CONTRACT(TspNoLocalSearch, TspNoLocalSearch);
 ANTSLAM_COLONY_CONTRACT(TspTwoOpt, TspTwoOpt);
 ANTSLAM_COLONY_CONTRACT(TspTwoHalfOpt, TspTwoHalfOpt);
 ANTSLAM_COLONY_CONTRACT(TspThreeOpt, TspThreeOpt);
+ANTSLAM_COLONY_CONTRACT(TspFocusedNoLocalSearch, TspFocusedNoLocalSearch);
+ANTSLAM_COLONY_CONTRACT(TspFocusedThreeOpt, TspFocusedThreeOpt);
 ANTSLAM_COLONY_CONTRACT(Slam, Slam);
 
 }  // namespace

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "frontend/laser_log.hpp"
 
@@ -123,9 +125,78 @@ TEST(LaserLog, MalformedLinesNameFileLineAndProblem) {
                "bad.clf:1: ODOM has 3 fields, expected at least 8 (ODOM x y theta "
                "tv rv accel timestamp)");
   expect_error("PARAM robot_front_laser_max -3\n" + flaser(3, 1.0),
-               "bad.clf:1: robot_front_laser_max must be positive");
+               "bad.clf:1: PARAM robot_front_laser_max: maximum range -3 m is not in (0, 1000 m]");
+  expect_error("FLASER 3 1 1e39 3 0 0 0 0 0 0 1\n",
+               "bad.clf:1: range 1 1e+39 m is beyond 3.40282e+38 m");
+  expect_error("FLASER 3 1 2 3 0 0 0 1e10 0 0 1\n",
+               "bad.clf:1: odometry 1e+10 m is beyond 1e+09 m");
+  expect_error("FLASER 3 1 2 3 0 0 0 0 0 0 1e13\n",
+               "bad.clf:1: timestamp 1e+13 s is beyond 1e+12 s");
   expect_error("hello world\n", "bad.clf:1: not a CARMEN message: 'hello'");
   expect_error("# only comments\nSYNC 1\n", "bad.clf: no FLASER or ROBOTLASER1 scans");
+}
+
+TEST(LaserLog, ChecksTheGeometryOfFileAndOverridesAlike) {
+  // A laser offset of 1e308 m made the scan matcher's grid index overflow (SIGSEGV), a field of
+  // view of 1e308 degrees became inf and hung the frontend: each is now one line naming the
+  // PARAM line, and the same check refuses the same value as an override.
+  const std::pair<std::string, std::string> params[] = {
+      {"PARAM robot_frontlaser_offset 1e308\n",
+       "bad.clf:1: PARAM robot_frontlaser_offset: laser offset 1e+308 m: the laser must be within "
+       "10 m of the robot origin"},
+      {"# c\nPARAM laser_front_laser_fov 1e308\n",
+       "bad.clf:2: PARAM laser_front_laser_fov: field of view 1e+308 degrees is not in (0, 360] "
+       "degrees"},
+      {"PARAM laser_front_laser_fov 400\n",
+       "bad.clf:1: PARAM laser_front_laser_fov: field of view 400 degrees is not in (0, 360] "
+       "degrees"},
+      {"PARAM robot_front_laser_max 1e6\n",
+       "bad.clf:1: PARAM robot_front_laser_max: maximum range 1e+06 m is not in (0, 1000 m]"}};
+  for (const auto& [param, message] : params) expect_error(param + flaser(3, 1.0), message);
+  // ROBOTLASER1 lines carry their own geometry: 5 beams 2 rad apart span 8 rad; a maximum range
+  // of 0; a laser 50 m from the robot.
+  const std::string tail = " 0.01 0 5 1 2 3 4 5 0 ";
+  const std::string zeros = " 0 0 0 0 0 0 0 0 0 0 7.25\n";
+  expect_error("ROBOTLASER1 0 -1.5 3.0 2.0 30" + tail + "0" + zeros,
+               "bad.clf:1: ROBOTLASER1 field of view 458.366 degrees is not in (0, 360] degrees");
+  expect_error("ROBOTLASER1 0 -1.5 3.0 0.75 0" + tail + "0" + zeros,
+               "bad.clf:1: ROBOTLASER1 maximum range 0 m is not in (0, 1000 m]");
+  expect_error("ROBOTLASER1 0 -1.5 3.0 0.75 30" + tail + "50" + zeros,
+               "bad.clf:1: ROBOTLASER1 laser offset 50 m: the laser must be within 10 m of the "
+               "robot origin");
+  // An override wins over the log, so it may repair a bad PARAM value.
+  SensorOverrides repaired;
+  repaired.laser_offset = 0.5;
+  EXPECT_DOUBLE_EQ(
+      parse_carmen("PARAM robot_frontlaser_offset 1e308\n" + flaser(3, 1.0), "mem", repaired)
+          .scans[0]
+          .laser_pose.x,
+      0.5);
+  for (const double offset : {1e308, -11.0}) {
+    SensorOverrides o;
+    o.laser_offset = offset;
+    EXPECT_THROW(parse_carmen(flaser(3, 1.0), "mem", o), std::invalid_argument);
+  }
+  EXPECT_EQ(laser_offset_problem(-10.0), "");
+  EXPECT_EQ(field_of_view_problem(2.0 * kPi), "");
+  EXPECT_NE(field_of_view_problem(std::numeric_limits<double>::infinity()), "");
+  EXPECT_NE(first_angle_problem(std::nan("")), "");
+  EXPECT_NE(max_range_problem(std::nan("")), "");
+}
+
+TEST(LaserLog, TimeOrderIsCheckedOnRequest) {
+  // Writing the odometry of such a log gave a TUM file that antslam eval refused.
+  const std::string text = flaser(3, 1.0) + "FLASER 3 1 1 1 0 0 0 0 0 0 0.5\n";
+  const LaserLog log = parse_carmen(text, "t.clf");
+  try {
+    require_time_order(log);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(),
+                 "t.clf:2: scan timestamp 0.5 s is earlier than 10.5 s on line 1 (a TUM "
+                 "trajectory needs the scans in time order)");
+  }
+  EXPECT_NO_THROW(require_time_order(parse_carmen(flaser(3, 1.0) + flaser(3, 2.0), "same.clf")));
 }
 
 TEST(LaserLog, RejectsNonsenseOverrides) {

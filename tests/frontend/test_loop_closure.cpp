@@ -93,13 +93,18 @@ TEST(LoopClosure, RejectsACorridorThatMatchesItselfShifted) {
   EXPECT_NE(m.reason.find("ambiguous"), std::string::npos);
 }
 
-TEST(LoopClosure, TheFrontendClosesASimulatedLoop) {
+/// Once round the ring corridor and on past the start, where the loop closes.
+SimulatedRun ring_loop_run() {
   SimulationSettings sim;
   sim.beams = 181;
   sim.step = 0.35;
   std::vector<V> path = loop_waypoints();
-  path.push_back(V(8, 0));  // drive on past the start: the loop closes there
-  const SimulatedRun run = simulate_run(loop_world(), path, sim, 4);
+  path.push_back(V(8, 0));
+  return simulate_run(loop_world(), path, sim, 4);
+}
+
+TEST(LoopClosure, TheFrontendClosesASimulatedLoop) {
+  const SimulatedRun run = ring_loop_run();
   FrontendSettings settings;
   const FrontendResult r = run_frontend(run.log, settings);
   ASSERT_GE(r.fragment_set.closures.size(), 1U);
@@ -120,6 +125,22 @@ TEST(LoopClosure, TheFrontendClosesASimulatedLoop) {
     EXPECT_LT(c.from + settings.closure.min_fragment_gap, c.to + 1);
     EXPECT_NEAR(c.anchor.x, r.fragment_set.fragments[c.to].exit.x, 1e-12);  // anchor = E_b
   }
+}
+
+TEST(LoopClosure, NeighboursOfTheCandidateJoinItsMap) {
+  // A later fragment seldom sees what one earlier fragment saw: matched against the candidate
+  // and its neighbours, more revisits close, and every accepted match is still right.
+  const SimulatedRun run = ring_loop_run();
+  FrontendSettings alone;
+  alone.closure.target_neighbours = 0;
+  const FrontendResult single = run_frontend(run.log, alone);
+  const FrontendResult joined = run_frontend(run.log, FrontendSettings{});
+  const auto accepted = [](const FrontendResult& r) {
+    std::size_t n = 0;
+    for (const ClosureAttempt& a : r.attempts) n += a.match.accepted ? 1U : 0U;
+    return n;
+  };
+  EXPECT_GT(accepted(joined), accepted(single));
 }
 
 }  // namespace

@@ -124,6 +124,28 @@ TEST(MapRender, AverageOfIdenticalTrialsIsTheirMap) {
   EXPECT_GT(one.at(one.width() / 2, one.height() / 2).r, 200);
 }
 
+TEST(MapRender, ALargeMapIsDrawnAtTheFinestResolutionThatFits) {
+  const Room room = square_room();
+  MapRenderSettings s;
+  s.resolution = 0.01;
+  s.margin = 0.0;
+  const std::vector<std::vector<slam::Pose2>> trials{room.frames};
+  // The walls span 4 m x 4 m (hits up to the walls' outer cells): 400 x 400 cells fit 1e6.
+  EXPECT_DOUBLE_EQ(fitting_resolution(room.log, room.layout, trials, s), 0.01);
+  s.max_pixels = 40000;  // 200 x 200 cells: about 2 cm
+  const double coarse = fitting_resolution(room.log, room.layout, trials, s);
+  EXPECT_GE(coarse, 0.02);
+  EXPECT_LE(coarse, 0.021);
+  EXPECT_NEAR(coarse * 1000.0, std::round(coarse * 1000.0), 1e-9);  // whole millimetres
+  EXPECT_THROW(render_map(room.log, room.layout, room.frames, s), std::invalid_argument);
+  s.resolution = coarse;
+  const Image image = render_map(room.log, room.layout, room.frames, s);
+  EXPECT_LE(image.width() * image.height(), s.max_pixels);
+  // One millimetre finer would not fit.
+  s.resolution = coarse - 0.001;
+  EXPECT_THROW(render_map(room.log, room.layout, room.frames, s), std::invalid_argument);
+}
+
 TEST(Png, RoundTripsAndRejectsGarbage) {
   Image image(7, 3, Rgb{1, 2, 3});
   image.at(6, 2) = Rgb{250, 0, 9};

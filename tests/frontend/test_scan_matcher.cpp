@@ -25,7 +25,7 @@ TEST(ScanMatcher, RecoversAScanShiftedAndRotatedAgainstItself) {
   // The same scan, predicted 0.3 m and 0.2 rad away: it must come back onto itself.
   const slam::Pose2 offset{0.3, -0.25, 0.2};
   const MatchResult r = matcher.match(matching_points(scan, s), truth * offset);
-  EXPECT_TRUE(r.matched);
+  EXPECT_TRUE(r.matched());
   EXPECT_NEAR(r.pose().x, truth.x, 0.005);
   EXPECT_NEAR(r.pose().y, truth.y, 0.005);
   EXPECT_NEAR(r.pose().theta, truth.theta, 0.002);

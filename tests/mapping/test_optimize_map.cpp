@@ -75,6 +75,22 @@ MappingSettings quick_settings() {
   return s;
 }
 
+bool same_frames(const std::vector<slam::Pose2>& a, const std::vector<slam::Pose2>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i].x != b[i].x || a[i].y != b[i].y || a[i].theta != b[i].theta) return false;
+  return true;
+}
+
+TEST(Mapping, WithoutClosingTheMapIsTheBestTrial) {
+  MappingSettings s = quick_settings();
+  s.closing.enabled = false;
+  const MappingResult r = optimize_map(simulated_loop().fragment_set, s);
+  EXPECT_FALSE(r.closing.has_value());
+  EXPECT_TRUE(same_frames(r.frames, r.trials[r.best].frames));
+  EXPECT_NEAR(r.scores.weight, r.trials[r.best].scores.weight, 1e-9);
+}
+
 TEST(Mapping, OptimisedMapHonoursEveryClosureAndComposesTheTrajectory) {
   const FrontendResult& fr = simulated_loop();
   const slam::FragmentSet& set = fr.fragment_set;
@@ -93,9 +109,13 @@ TEST(Mapping, OptimisedMapHonoursEveryClosureAndComposesTheTrajectory) {
     EXPECT_NEAR(r.scan_matcher_frames[i].x, fr.fragments[i].frame.x, 1e-9);
     EXPECT_NEAR(r.scan_matcher_frames[i].y, fr.fragments[i].frame.y, 1e-9);
   }
-  // Every scan: its fragment's optimised frame times its pose in the fragment, in scan order.
+  // The map: the loops closed with every (consistent) closure from the best trial.
+  ASSERT_TRUE(r.closing.has_value());
+  for (const bool trusted : r.closing->trusted) EXPECT_TRUE(trusted);
+  EXPECT_TRUE(same_frames(r.frames, r.closing->frames));
+  // Every scan: its fragment's map frame times its pose in the fragment, in scan order.
   ASSERT_EQ(r.corrected.size(), fr.trajectory.size());
-  const std::vector<slam::Pose2>& frames = r.trials[r.best].frames;
+  const std::vector<slam::Pose2>& frames = r.frames;
   for (std::size_t i = 0; i < fr.fragments.size(); ++i) {
     const FragmentRecord& f = fr.fragments[i];
     for (std::size_t k = 0; k < f.scan_count; ++k) {

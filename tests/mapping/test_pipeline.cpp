@@ -98,6 +98,43 @@ TEST(Pipeline, WithoutMapsOrReferenceItDrawsAndEvaluatesNothing) {
   EXPECT_FALSE(report_json("loop.clf", s, r).contains("evaluation"));
 }
 
+TEST(Pipeline, MapsTooLargeForThePixelCapAreDrawnCoarserAndTheVerdictCounts) {
+  PipelineSettings s = quick_settings();
+  s.mapping.trials = 1;
+  s.map.resolution = 0.01;
+  s.map.max_pixels = 200000;  // the ring (about 30 m x 24 m) would need 7 million at 1 cm
+  const PipelineResult r = run_pipeline(simulated_loop().log, s);
+  ASSERT_TRUE(r.maps.has_value());
+  EXPECT_GT(r.maps->resolution, 0.05);
+  EXPECT_LE(r.maps->scan_matcher.width() * r.maps->scan_matcher.height(), s.map.max_pixels);
+  EXPECT_LE(r.maps->average.width() * r.maps->average.height(), s.map.max_pixels);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings.back().find("maps drawn at"), std::string::npos) << r.warnings.back();
+  const nlohmann::json report = report_json("loop.clf", s, r);
+  EXPECT_EQ(report["maps"]["resolution_m"], r.maps->resolution);
+  EXPECT_EQ(report["warnings"].back(), r.warnings.back());
+
+  // The simulated loop closes: every closure within 2 sigma, no fallback, a consistent map.
+  const Verdict& v = r.verdict;
+  EXPECT_EQ(v.closures, r.frontend.fragment_set.closures.size());
+  EXPECT_EQ(v.scans, simulated_loop().log.scans.size());
+  EXPECT_TRUE(v.outside.empty());
+  EXPECT_EQ(v.fallbacks, 0U);
+  EXPECT_FALSE(v.doubtful);
+  EXPECT_EQ(v.line.rfind("verdict: consistent map: ", 0), 0U) << v.line;
+  EXPECT_EQ(report["verdict"]["line"], v.line);
+  // The same map judged with a closure ellipse of nought: every closure is outside.
+  VerdictSettings strict;
+  strict.closure_sigmas = 0.0;
+  const Verdict w = judge(r.frontend, r.mapping, strict);
+  EXPECT_EQ(w.outside.size(), w.closures);
+  EXPECT_TRUE(w.doubtful);
+  EXPECT_EQ(w.line.rfind("verdict: DOUBTFUL map: 0 of ", 0), 0U) << w.line;
+  double largest = 0.0;
+  for (const ClosureResidual& c : r.mapping.after) largest = std::max(largest, c.mahalanobis);
+  EXPECT_DOUBLE_EQ(w.largest_closure, largest);
+}
+
 TEST(Pipeline, NoClosureMeansNothingToOptimise) {
   PipelineSettings s = quick_settings();
   s.frontend.closure.enabled = false;

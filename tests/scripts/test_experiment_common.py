@@ -37,6 +37,17 @@ class Statistics(unittest.TestCase):
         self.assertEqual(common.pm(common.stats([])), "-")
 
 
+class PathLength(unittest.TestCase):
+    def test_metres_along_the_positions(self):
+        # (0, 0) -> (3, 4) -> (3, 10): 5 + 6 metres; headings and the comment do not count.
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "t.tum")
+            with open(path, "w") as f:
+                f.write("# t x y z qx qy qz qw\n0 0 0 0 0 0 0 1\n1 3 4 0 0 0 0.6 0.8\n"
+                        "2 3 10 0 0 0 0 1\n")
+            self.assertAlmostEqual(common.path_length(path), 11.0, places=12)
+
+
 class StepMean(unittest.TestCase):
     """The best weight of a trial holds from its time until the next improvement."""
 

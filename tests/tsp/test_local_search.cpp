@@ -198,7 +198,9 @@ TEST(LocalSearch, StopsAtAnExpiredToken) {
                                std::numeric_limits<double>::infinity());
   ls.improve(problem, tour, workspace, rng, expired);
   EXPECT_TRUE(workspace.stats.stopped);
-  EXPECT_EQ(workspace.stats.examined, 64U);  // the first poll
+  // The first poll: after 64 cities or 16 moves.
+  EXPECT_LE(workspace.stats.examined, 64U);
+  EXPECT_LE(workspace.stats.moves, 16U);
   EXPECT_TRUE(testing::is_permutation_of_n(tour, problem.size()));
   EXPECT_LE(problem.cost(tour), before);
   const aco::StopToken cpu_expired(aco::StopToken::Clock::time_point::max(), 0.0);
@@ -232,6 +234,69 @@ TEST(LocalSearch, StartsFromChangedCitiesOnly) {
   EXPECT_TRUE(testing::is_permutation_of_n(kicked, problem.size()));
   EXPECT_LE(problem.cost(kicked), kicked_length);
   EXPECT_GE(workspace.stats.examined, 6U);
+}
+
+/// 0 A B C D -> 0 A C B D with four equal quarters; `added` gets its three new edges.
+std::vector<std::uint32_t> double_bridge(const std::vector<std::uint32_t>& tour,
+                                         std::vector<std::uint32_t>& added) {
+  const std::size_t q = tour.size() / 4;
+  const auto at = [&](std::size_t p) { return tour.begin() + static_cast<std::ptrdiff_t>(p); };
+  std::vector<std::uint32_t> kicked(tour.begin(), at(q + 1));
+  kicked.insert(kicked.end(), at(2 * q + 1), at(3 * q + 1));
+  kicked.insert(kicked.end(), at(q + 1), at(2 * q + 1));
+  kicked.insert(kicked.end(), at(3 * q + 1), tour.end());
+  added = {tour[q], tour[2 * q + 1], tour[3 * q], tour[q + 1], tour[2 * q], tour[3 * q + 1]};
+  return kicked;
+}
+
+TEST(LocalSearch, StartsFromTheEndpointsOfNewEdgesOnly) {
+  // A local optimum of 2000 cities, kicked by a double bridge: the search from the six end
+  // cities of the three new edges examines a few hundred cities at most, not all 2000, and never
+  // lengthens the tour.
+  const TspProblem problem(testing::random_instance(2000, 5, EdgeWeightType::euc_2d));
+  for (LocalSearchKind kind : kKinds) {
+    SCOPED_TRACE(std::string(to_string(kind)));
+    const TourLocalSearch ls({.kind = kind});
+    auto workspace = ls.make_workspace(problem);
+    aco::Rng rng(2);
+    auto tour = testing::random_tour(problem.size(), rng);
+    ls.improve(problem, tour, workspace, rng, {});
+    std::vector<std::uint32_t> added;
+    auto kicked = double_bridge(tour, added);
+    ASSERT_TRUE(testing::is_permutation_of_n(kicked, problem.size()));
+    const double kicked_length = problem.cost(kicked);
+    ls.improve(problem, kicked, workspace, rng, {}, added);
+    EXPECT_TRUE(testing::is_permutation_of_n(kicked, problem.size()));
+    EXPECT_LE(problem.cost(kicked), kicked_length);
+    EXPECT_GE(workspace.stats.examined, 6U);
+    EXPECT_LT(workspace.stats.examined, problem.size() / 4);
+    auto again = kicked;  // no new edges: nothing to examine, nothing changes
+    ls.improve(problem, again, workspace, rng, {}, {});
+    EXPECT_EQ(workspace.stats.examined, 0U);
+    EXPECT_EQ(again, kicked);
+  }
+}
+
+TEST(LocalSearch, AStoppedSearchFromNewEdgesLeavesNoCityQueued) {
+  const TspProblem problem(testing::random_instance(500, 6, EdgeWeightType::euc_2d));
+  const TourLocalSearch ls;
+  auto workspace = ls.make_workspace(problem);
+  aco::Rng rng(3);
+  auto tour = testing::random_tour(problem.size(), rng);
+  std::vector<std::uint32_t> every_edge;  // a random tour: call every edge new
+  for (std::size_t p = 0; p < tour.size(); ++p) {
+    every_edge.push_back(tour[p]);
+    every_edge.push_back(tour[(p + 1) % tour.size()]);
+  }
+  const aco::StopToken expired(aco::StopToken::Clock::now() - std::chrono::seconds(1),
+                               std::numeric_limits<double>::infinity());
+  ls.improve(problem, tour, workspace, rng, expired, every_edge);
+  EXPECT_TRUE(workspace.stats.stopped);
+  EXPECT_TRUE(testing::is_permutation_of_n(tour, problem.size()));
+  ls.improve(problem, tour, workspace, rng, {}, {});
+  EXPECT_EQ(workspace.stats.examined, 0U);
+  std::vector<std::uint32_t> out_of_range{0, 500};
+  EXPECT_THROW(ls.improve(problem, tour, workspace, rng, {}, out_of_range), std::invalid_argument);
 }
 
 TEST(ArrayTour, ReversalsKeepPositionsAndEdgeLengthsConsistent) {

@@ -155,6 +155,21 @@ TEST(Solver, ResolvesTheTspDefaults) {
   EXPECT_DOUBLE_EQ(resolved_parameters(problem, s).hybrid_deposit, 5.0);
 }
 
+TEST(Solver, FocusedConstructionIsMaxMinsDefault) {
+  const TspProblem& problem = instance_problem("eil51");
+  SolverSettings s;
+  EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 8U);
+  s.aco.variant = aco::Variant::acs;
+  EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 0U);
+  s.focused_edges = 5;
+  EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 5U);
+  s.aco.variant = aco::Variant::mmas;
+  s.focused_edges = 0;
+  EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 0U);
+  const aco::RunResult r = solve(problem, s, {.max_iterations = 3});
+  EXPECT_EQ(r.settings.colony.focused.min_new_edges, 0U);
+}
+
 TEST(Solver, NearestNeighbourLengthOfAHandMadeInstance) {
   // A 3 x 2 grid of unit squares (scaled by 10): from city 0 the greedy tour walks the
   // perimeter, 60.

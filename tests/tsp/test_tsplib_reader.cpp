@@ -223,5 +223,38 @@ TEST(Generator, IsSeededAndInRange) {
   EXPECT_THROW(random_uniform_instance(10, 1, 0.5), std::invalid_argument);
 }
 
+TEST(Generator, ClusteredIsSeededInRangeAndClustered) {
+  const Instance a = random_clustered_instance(2000, 3);
+  const Instance b = random_clustered_instance(2000, 3);
+  EXPECT_EQ(a.name(), "C2000.s3");
+  for (std::size_t i = 0; i < 2000; ++i) {
+    EXPECT_EQ(a.coords()[i].x, b.coords()[i].x);
+    EXPECT_EQ(a.coords()[i].y, b.coords()[i].y);
+    EXPECT_GE(a.coords()[i].x, 0.0);
+    EXPECT_LE(a.coords()[i].y, 1.0e6);
+    EXPECT_EQ(a.coords()[i].y, std::floor(a.coords()[i].y));
+  }
+  // Clustered cities are closer to their nearest neighbour than uniform ones: the mean
+  // nearest-neighbour distance of a uniform instance is about 0.5 side / sqrt(n) = 11180 here
+  // (plus a boundary effect); DIMACS's 200 clusters of standard deviation side / sqrt(n) are
+  // only about 1.6 times as dense, clusters of a fifth of that spread 25 times.
+  const auto mean_nearest = [](const Instance& instance) {
+    double total = 0.0;
+    for (std::uint32_t i = 0; i < instance.size(); ++i) {
+      double best = 1e300;
+      for (std::uint32_t j = 0; j < instance.size(); ++j)
+        if (j != i) best = std::min(best, instance.distance(i, j));
+      total += best;
+    }
+    return total / static_cast<double>(instance.size());
+  };
+  const double uniform = mean_nearest(random_uniform_instance(2000, 3));
+  EXPECT_NEAR(uniform, 11180.0, 1000.0);
+  EXPECT_LT(mean_nearest(a), 0.95 * uniform);
+  EXPECT_LT(mean_nearest(random_clustered_instance(2000, 3, 1e6, {.spread = 0.2})), 0.3 * uniform);
+  EXPECT_THROW(random_clustered_instance(2, 1), std::invalid_argument);
+  EXPECT_THROW(random_clustered_instance(100, 1, 1e6, {.spread = 0.0}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace antslam::tsp

@@ -36,15 +36,8 @@ TourLocalSearch::Workspace TourLocalSearch::make_workspace(const TspProblem& pro
 
 void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32_t>& tour,
                               Workspace& w, aco::Rng& rng, const aco::StopToken& stop) const {
-  w.stats = {};
-  const auto n = static_cast<std::uint32_t>(problem.size());
-  if (settings_.kind == LocalSearchKind::none || tour.size() < 4) return;  // n = 3: one tour
-  if (tour.size() != n) throw std::invalid_argument("local search: tour size differs from n");
-  const std::size_t k = std::min(settings_.neighbours, problem.neighbours(0).size());
-  const auto step = settings_.kind == LocalSearchKind::two_opt        ? &detail::two_opt_step
-                    : settings_.kind == LocalSearchKind::two_half_opt ? &detail::two_half_opt_step
-                                                                      : &detail::three_opt_step;
-  w.tour.assign(tour, problem);
+  if (!begin(problem, tour, w)) return;
+  const auto n = static_cast<std::uint32_t>(tour.size());
   // Don't-look bits: the active cities in random order (ACOTSP's random permutation).
   const bool changed_only = settings_.queue_changed_only && w.previous.size() == n;
   if (changed_only) {
@@ -66,9 +59,52 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
   for (std::uint32_t i = 0; i < n; ++i)
     if (w.queued[w.queue[i]]) w.queue[count++] = w.queue[i];
   rng = local;
+  search(problem, tour, w, count, stop);
+}
+
+void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32_t>& tour,
+                              Workspace& w, aco::Rng& rng, const aco::StopToken& stop,
+                              std::span<const std::uint32_t> new_edges) const {
+  if (!begin(problem, tour, w)) return;
+  // Only the endpoints of the new edges are active, in random order; the queue starts empty
+  // and the search leaves it empty, so nothing of size n is touched.
+  std::uint32_t count = 0;
+  aco::Rng local = rng;
+  for (const std::uint32_t c : new_edges) {
+    if (c >= tour.size()) throw std::invalid_argument("local search: new edge city out of range");
+    if (w.queued[c]) continue;
+    w.queued[c] = 1;
+    const std::uint32_t j = local.below(count + 1);
+    w.queue[count] = w.queue[j];
+    w.queue[j] = c;
+    ++count;
+  }
+  rng = local;
+  search(problem, tour, w, count, stop);
+}
+
+bool TourLocalSearch::begin(const TspProblem& problem, const std::vector<std::uint32_t>& tour,
+                            Workspace& w) const {
+  w.stats = {};
+  if (settings_.kind == LocalSearchKind::none || tour.size() < 4) return false;  // n = 3: one tour
+  if (tour.size() != problem.size())
+    throw std::invalid_argument("local search: tour size differs from n");
+  w.tour.assign(tour, problem);
+  return true;
+}
+
+void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_t>& tour,
+                             Workspace& w, std::uint32_t count, const aco::StopToken& stop) const {
+  const auto n = static_cast<std::uint32_t>(problem.size());
+  const std::size_t k = std::min(settings_.neighbours, problem.neighbours(0).size());
+  const auto step = settings_.kind == LocalSearchKind::two_opt        ? &detail::two_opt_step
+                    : settings_.kind == LocalSearchKind::two_half_opt ? &detail::two_half_opt_step
+                                                                      : &detail::three_opt_step;
   std::uint32_t head = 0;
   detail::Touched touched;
-  while (count > 0) {
+  // The stop token is polled every 64 cities and every 16 moves: on a poor tour of a million
+  // cities one city can take many moves, each reversing up to n / 2 cities.
+  while (count > 0 && !w.stats.stopped) {
     if ((++w.stats.examined & 63U) == 0 && stop.expired()) {
       w.stats.stopped = true;
       break;
@@ -78,7 +114,10 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
     --count;
     w.queued[city] = 0;
     while (step(problem, w.tour, city, k, touched)) {
-      ++w.stats.moves;
+      if ((++w.stats.moves & 15U) == 0 && stop.expired()) {
+        w.stats.stopped = true;
+        break;
+      }
       for (std::size_t t = 0; t < touched.count; ++t) {
         const std::uint32_t c = touched.cities[t];
         if (w.queued[c] || c == city) continue;
@@ -88,6 +127,10 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
         ++count;
       }
     }
+  }
+  for (std::uint32_t r = 0; r < count; ++r) {  // a stopped search leaves its queue clean
+    const std::uint32_t at = head + r;
+    w.queued[w.queue[at >= n ? at - n : at]] = 0;
   }
   const auto cities = w.tour.cities();
   tour.assign(cities.begin(), cities.end());

@@ -60,6 +60,9 @@ std::vector<std::uint32_t> parse_tour(std::istream& in, const std::string& sourc
 }
 
 std::vector<std::uint32_t> read_tour(const std::filesystem::path& path, std::size_t n) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(path.string() + ": is a directory, expected a TSPLIB file");
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   return parse_tour(in, path.string(), n);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "tsp/tsplib.hpp"
 #include "tsplib_lexer.hpp"
@@ -92,9 +93,11 @@ std::size_t parse_dimension(const LineReader& r, std::string_view value) {
   return static_cast<std::size_t>(*d);
 }
 
-/// NODE_COORD_SECTION or DISPLAY_DATA_SECTION: n lines "id x y", ids 1..n each once.
+/// NODE_COORD_SECTION or DISPLAY_DATA_SECTION: n lines "id x y", ids 1..n each once. The
+/// points are kept as read and placed at the end, so that memory follows the lines the section
+/// has, not the DIMENSION it claims.
 std::vector<Point> read_points(LineReader& r, std::size_t n, const std::string& section) {
-  std::vector<Point> points(n);
+  std::vector<std::pair<std::size_t, Point>> listed;
   std::vector<bool> seen(n, false);
   std::string_view line;
   for (std::size_t count = 0; count < n; ++count) {
@@ -120,47 +123,44 @@ std::vector<Point> read_points(LineReader& r, std::size_t n, const std::string& 
                std::string(token) + "'");
       xy[c] = *v;
     }
-    points[index] = {xy[0], xy[1]};
+    listed.push_back({index, {xy[0], xy[1]}});
   }
+  std::vector<Point> points(n);
+  for (const auto& [index, point] : listed) points[index] = point;
   return points;
 }
 
-/// EDGE_WEIGHT_SECTION: the listed entries, any number per line, into a full n x n matrix.
+/// EDGE_WEIGHT_SECTION: the listed entries, any number per line, into a full n x n matrix. The
+/// matrix is made only once every entry has been read, so that a DIMENSION the section does not
+/// back with weights costs no memory.
 std::vector<std::int32_t> read_weights(LineReader& r, std::size_t n, Layout layout) {
-  std::vector<std::int32_t> w(n * n, 0);
   const std::size_t total = entry_count(layout, n);
-  std::size_t read = 0;
-  std::size_t i = 0;
-  auto [j, row_end] = row_range(layout, 0, n);  // next entry is (i, j); row i ends at row_end
+  std::vector<std::int32_t> listed;
   std::string_view line;
-  while (read < total) {
-    const std::string short_by = "EDGE_WEIGHT_SECTION has " + std::to_string(read) + " of " +
-                                 std::to_string(total) + " weights";
+  while (listed.size() < total) {
+    const std::string short_by = "EDGE_WEIGHT_SECTION has " + std::to_string(listed.size()) +
+                                 " of " + std::to_string(total) + " weights";
     if (!r.next(line)) r.fail(short_by + " (the file ends)");
     if (is_keyword_line(line)) r.fail(short_by);
     for (std::string_view token : detail::split(line)) {
-      if (read == total) r.fail("more weights than the " + std::to_string(total) + " expected");
+      if (listed.size() == total)
+        r.fail("more weights than the " + std::to_string(total) + " expected");
       const auto v = detail::parse_double(token);
       if (!v) r.fail("weight '" + std::string(token) + "' is not a number");
       if (!std::isfinite(*v) || *v < 0.0 || *v != std::floor(*v) ||
           *v > std::numeric_limits<std::int32_t>::max())
         r.fail("weight '" + std::string(token) + "' is not a non-negative 32-bit integer");
-      while (j >= row_end) {  // skip to the next row with entries
-        ++i;
-        const auto range = row_range(layout, i, n);
-        j = range.first;
-        row_end = range.second;
-      }
-      const auto value = static_cast<std::int32_t>(*v);
-      if (i != j) {  // TSPLIB files carry 0 or a large sentinel on the diagonal; unused here
-        if (layout == Layout::full) {
-          w[i * n + j] = value;
-        } else {
-          w[i * n + j] = w[j * n + i] = value;
-        }
-      }
-      ++j;
-      ++read;
+      listed.push_back(static_cast<std::int32_t>(*v));
+    }
+  }
+  std::vector<std::int32_t> w(n * n, 0);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto [begin, end] = row_range(layout, i, n);
+    for (std::size_t j = begin; j < end; ++j, ++k) {
+      if (i == j) continue;  // TSPLIB files carry 0 or a large sentinel on the diagonal; unused
+      w[i * n + j] = listed[k];
+      if (layout != Layout::full) w[j * n + i] = listed[k];
     }
   }
   return w;
@@ -175,6 +175,7 @@ struct Specification {
   std::optional<std::vector<Point>> coords;
   std::optional<std::vector<Point>> display;
   std::optional<std::vector<std::int32_t>> weights;
+  std::string last_section;  ///< the section read last, for messages about extra data
 };
 
 void read_keyword(LineReader& r, Specification& s, std::string_view key, std::string_view value) {
@@ -228,9 +229,14 @@ void read_keyword(LineReader& r, Specification& s, std::string_view key, std::st
     s.weights = read_weights(r, *s.dimension, *s.layout);
   } else if (is_one_of(key, kSections)) {
     r.fail(k + " is not supported");
+  } else if (!detail::looks_like_keyword(key)) {
+    r.fail(s.last_section.empty() ? "data '" + k + "' outside a section"
+                                  : s.last_section + " has more than the DIMENSION " +
+                                        std::to_string(s.dimension.value_or(0)) + " entries");
   } else {
     r.fail("unknown keyword '" + k + "'");
   }
+  if (is_one_of(k, kSections)) s.last_section = k;  // `key` may view a line read since
 }
 
 Instance build(const LineReader& r, Specification& s) {
@@ -268,6 +274,9 @@ Instance parse_instance(std::istream& in, const std::string& source) {
 }
 
 Instance read_instance(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw std::runtime_error(path.string() + ": is a directory, expected a TSPLIB file");
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   return parse_instance(in, path.string());

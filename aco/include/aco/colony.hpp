@@ -24,6 +24,7 @@
 
 #include "aco/backend.hpp"
 #include "aco/backend_kind.hpp"
+#include "aco/focused_construction.hpp"
 #include "aco/layered_family.hpp"
 #include "aco/local_search.hpp"
 #include "aco/permutation_family.hpp"
@@ -55,6 +56,7 @@ struct ColonySettings {
   double beta = 2.0;       ///< heuristic exponent of eq. (1); no effect without heuristic
   std::uint64_t seed = 1;  ///< seed of every random stream of the run
   std::size_t local_search_ants = 0;  ///< 0: local search improves every ant; k: the k best only
+  FocusedSettings focused{};  ///< ants change a source tour (permutation problems); off by default
 };
 
 /// What the observer hears after every iteration.
@@ -97,6 +99,10 @@ class Colony {
   using Family = typename FamilyOf<Problem>::type;
   using Trail = typename Family::Trail;
   static constexpr bool kHasLocalSearch = !std::is_same_v<LocalSearch, NoLocalSearch>;
+  static constexpr bool kCanFocus = requires(Family & f, std::span<const std::uint32_t> tour) {
+    f.set_source(tour, std::size_t{1});
+  };
+  static constexpr bool kLocalSearchFromCities = LocalSearchFromCities<LocalSearch, Problem>;
 
   Colony(const Problem& problem, const ColonySettings& settings, Rule rule = {}, Update update = {},
          LocalSearch local_search = {}, Exec backend = {})
@@ -108,8 +114,11 @@ class Colony {
         backend_(std::move(backend)),
         family_(problem, settings.alpha, settings.beta) {
     if (settings_.ants == 0) throw std::invalid_argument("colony needs at least one ant");
+    if (settings_.focused.enabled() && !kCanFocus)
+      throw std::invalid_argument("focused construction needs a permutation problem");
     const std::size_t ants = settings_.ants;
     ants_.resize(ants);
+    skipped_.assign(ants, 0);
     rngs_.resize(ants);
     ranking_.resize(ants);
     family_.reserve_ants(ants);
@@ -125,15 +134,28 @@ class Colony {
   void reset() {
     iteration_ = 0;
     best_ = Solution{};
-    update_.initialize(family_.trail(), family_.init_context(settings_.ants, kHasLocalSearch));
+    InitContext context = family_.init_context(settings_.ants, kHasLocalSearch);
+    context.focused = settings_.focused.enabled();
+    if constexpr (kCanFocus) family_.set_source({}, 0);
+    update_.initialize(family_.trail(), context);
   }
 
-  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long local search end early.
+  /// One iteration (Algorithm 2, lines 9-34). `stop` lets a long phase end early, so that a
+  /// budget holds inside an iteration: the local search stops improving, a family that polls
+  /// the token (set_stop) finishes the path it builds at once, and ants not begun when it
+  /// expires are not built -- they repeat ant 0's path (ant 0 always runs, so the iteration has
+  /// a best; the run ends after such an iteration).
   IterationReport step(const StopToken& stop = {}) {
     ++iteration_;
     const std::size_t ants = settings_.ants;
     for (std::size_t a = 0; a < ants; ++a) rngs_[a] = ant_stream(settings_.seed, iteration_, a);
-    family_.prepare(rule_);
+    if constexpr (kCanFocus) choose_source();
+    if constexpr (requires { family_.set_stop(stop); }) family_.set_stop(stop);
+    if constexpr (requires { family_.prepare(rule_, backend_); }) {
+      family_.prepare(rule_, backend_);
+    } else {
+      family_.prepare(rule_);
+    }
 
     const bool improve_all = kHasLocalSearch && (settings_.local_search_ants == 0 ||
                                                  settings_.local_search_ants >= ants);
@@ -147,9 +169,13 @@ class Colony {
       backend_.for_each(ants, finish);
     } else {
       backend_.for_each(ants, [&](std::size_t a) {
+        skipped_[a] = a > 0 && stop.expired() ? 1 : 0;
+        if (skipped_[a] != 0) return;
         family_.construct(a, ants_[a].path, rngs_[a], rule_);
         finish(a);
       });
+      for (std::size_t a = 1; a < ants; ++a)
+        if (skipped_[a] != 0) ants_[a] = ants_[0];
     }
     if (kHasLocalSearch && !improve_all) {
       rank();
@@ -179,10 +205,12 @@ class Colony {
     if (!termination.bounded())
       throw std::invalid_argument(
           "termination: set iterations, a time budget, a target or stagnation");
-    reset();
+    // The budget counts from here: initialising the trails (a nearest-neighbour tour of a
+    // million cities takes seconds) is part of the run.
     using Clock = StopToken::Clock;
-    const auto start = Clock::now();
+    const auto start = termination.start != Clock::time_point{} ? termination.start : Clock::now();
     const double cpu_start = StopToken::cpu_seconds();
+    reset();
     const StopToken stop(termination.time_limit_s > 0.0
                              ? start + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(termination.time_limit_s))
@@ -240,8 +268,26 @@ class Colony {
 
  private:
   void improve(std::size_t a, const StopToken& stop) {
+    if constexpr (kHasLocalSearch && kCanFocus && kLocalSearchFromCities) {
+      if (family_.focused()) {  // the source is a local optimum: start from the changed cities
+        local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop,
+                              family_.new_edges(a));
+        return;
+      }
+    }
     if constexpr (kHasLocalSearch)
       local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop);
+  }
+
+  /// Focused construction from the second iteration on: the source is the best-so-far tour with
+  /// probability focused.global_best_source, else the previous iteration's best (drawn from the
+  /// stream after the last ant's, so it does not depend on threads).
+  void choose_source() {
+    if (!settings_.focused.enabled() || iteration_ < 2) return;
+    Rng pick = ant_stream(settings_.seed, iteration_, settings_.ants);
+    const bool global = pick.uniform() < settings_.focused.global_best_source;
+    family_.set_source(global ? best_.path : ants_[ranking_.front()].path,
+                       settings_.focused.min_new_edges);
   }
 
   /// Ant indices by increasing cost; ties keep ant order. (std::sort on (cost, index) is the
@@ -261,6 +307,7 @@ class Colony {
   Exec backend_;
   Family family_;
   std::vector<Solution> ants_;
+  std::vector<std::uint8_t> skipped_;  ///< per ant: not built this iteration (stop expired)
   std::vector<Rng> rngs_;
   std::vector<std::uint32_t> ranking_;
   std::vector<typename LocalSearch::Workspace> workspaces_;

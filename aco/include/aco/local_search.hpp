@@ -6,6 +6,7 @@
 
 #include <concepts>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "aco/random.hpp"
@@ -19,6 +20,18 @@ concept LocalSearchFor = requires(const LS& ls, const P& p, typename LS::Workspa
                                   const StopToken& stop) {
   { ls.make_workspace(p) } -> std::same_as<typename LS::Workspace>;
   ls.improve(p, path, ws, rng, stop);
+};
+
+/// Optional: a local search that starts from given cities only,
+///   improve(problem, path, workspace, rng, stop, new_edges)
+/// where new_edges lists city pairs (a, b): the edges of `path` that are not in a tour the
+/// search left locally optimal (the source of a focused construction). Every other city is taken
+/// as already improved, as with don't-look bits.
+template <class LS, class P>
+concept LocalSearchFromCities = LocalSearchFor<LS, P> &&
+    requires(const LS& ls, const P& p, typename LS::Workspace& ws, std::vector<std::uint32_t>& path,
+             Rng& rng, const StopToken& stop, std::span<const std::uint32_t> edges) {
+  ls.improve(p, path, ws, rng, stop, edges);
 };
 
 /// No local search.

@@ -5,7 +5,13 @@
 // ACOTSP's neighbour_choose_and_move_to_next, with distance as the fallback criterion). So a
 // tour costs O(n k) plus the fallbacks, each an O(n) scan -- or, for problems that offer one
 // (PermutationProblemWithNearestSearch), an exact search that is about O(1) per fallback.
+// Once the colony gives it a source tour (set_source), ants change that tour instead of building
+// from nothing: focused construction (focused_construction.hpp). Once the run's stop token
+// expires (set_stop), a tour under construction is finished by appending its unvisited nodes in
+// index order, O(n): on a million nodes one ant takes seconds, and a budget must hold inside an
+// iteration.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -15,9 +21,12 @@
 #include <utility>
 #include <vector>
 
+#include "aco/backend.hpp"
 #include "aco/edge_trail.hpp"
+#include "aco/focused_construction.hpp"
 #include "aco/problem.hpp"
 #include "aco/random.hpp"
+#include "aco/termination.hpp"
 #include "aco/update_context.hpp"
 
 namespace antslam::aco {
@@ -72,7 +81,20 @@ class PermutationFamily {
   }
 
   InitContext init_context(std::size_t ants, bool local_search) const {
-    return {reference_cost(), ants, trail_.decision_count(), trail_.mean_options(), local_search};
+    return {reference_cost(), ants,  trail_.decision_count(), trail_.mean_options(),
+            local_search,     false, static_cast<double>(k_)};
+  }
+
+  /// From now on ants change `tour` and add at least `min_new_edges` edges of their own
+  /// (focused construction); min_new_edges = 0 returns to building tours from nothing.
+  void set_source(std::span<const std::uint32_t> tour, std::size_t min_new_edges) {
+    min_new_edges_ = min_new_edges;
+    if (min_new_edges_ > 0) source_.assign(tour);
+  }
+  bool focused() const { return min_new_edges_ > 0; }
+  /// The edges of ant `ant`'s last focused tour that are not in the source, as city pairs.
+  std::span<const std::uint32_t> new_edges(std::size_t ant) const {
+    return scratch_[ant].new_edges;
   }
 
   /// C_nn: length of the nearest-neighbour tour from node 0.
@@ -92,30 +114,64 @@ class PermutationFamily {
     return problem_->cost(tour);
   }
 
-  /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix).
+  /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix), in blocks
+  /// spread over the backend's threads when there is more than one block (serial without one).
   template <class Rule>
-  void prepare(const Rule&) {
-    const auto tau = trail_.values();
-    for (std::size_t e = 0; e < weight_.size(); ++e) refresh(e, tau[e]);
+  void prepare(const Rule& rule) {
+    SerialBackend serial;
+    prepare(rule, serial);
   }
+  template <class Rule, class B>
+  void prepare(const Rule&, B& backend) {
+    constexpr std::size_t kBlock = 1 << 15;
+    const auto tau = trail_.values();
+    const std::size_t blocks = (weight_.size() + kBlock - 1) / kBlock;
+    const auto refresh_block = [&](std::size_t b) {
+      const std::size_t end = std::min(weight_.size(), (b + 1) * kBlock);
+      for (std::size_t e = b * kBlock; e < end; ++e) refresh(e, tau[e]);
+    };
+    if (blocks <= 1) {
+      refresh_block(0);
+    } else {
+      backend.for_each(blocks, refresh_block);
+    }
+  }
+
+  /// The token construct() and construct_synchronous() poll (every kStopPoll steps).
+  void set_stop(const StopToken& stop) { stop_ = stop; }
 
   template <class Rule>
   void construct(std::size_t ant, std::vector<std::uint32_t>& tour, Rng& rng, const Rule& rule) {
     Scratch& s = scratch_[ant];
     Rng local = rng;  // the colony's generators sit side by side: keep this one's in a register
-    std::uint32_t* t = begin(s, tour, local.below(n_));
-    for (std::uint32_t step = 1; step < n_; ++step)
-      visit(s, t, choose_next(s, t[step - 1], local, rule));
+    const std::uint32_t start = local.below(n_);
+    if (focused()) {
+      std::uint32_t* t = clear(s, tour);
+      build_focused(
+          source_, n_, start, min_new_edges_,
+          [&](std::uint32_t current) { return choose_next(s, current, local, rule); },
+          [&](std::uint32_t city) { visit(s, t, city); },
+          [&](std::uint32_t city) { return s.visited[city] != 0; }, s.new_edges);
+    } else {
+      std::uint32_t* t = begin(s, tour, start);
+      for (std::uint32_t step = 1; step < n_; ++step) {
+        if (step % kStopPoll == 0 && stop_.expired()) {
+          complete(s, t);
+          break;
+        }
+        visit(s, t, choose_next(s, t[step - 1], local, rule));
+      }
+    }
     rng = local;
   }
 
   /// Ant Colony System: all ants move one step, then apply the local update in ant order
   /// (Dorigo & Gambardella 1997 move ants synchronously), so results are thread-independent.
+  /// Focused ants build their tours independently; the local update then erodes the edges each
+  /// ant added (its new edges), in ant order.
   template <class Rule, class Update, class B>
   void construct_synchronous(const Rule& rule, const Update& update, B& backend,
                              std::span<Solution> ants, std::span<Rng> rngs) {
-    for (std::size_t a = 0; a < ants.size(); ++a)
-      begin(scratch_[a], ants[a].path, rngs[a].below(n_));
     const auto local = [&](std::uint32_t i, std::uint32_t j) {
       const std::uint32_t e =
           trail_.update_edge(i, j, [&](double& tau) { update.local_update(tau); });
@@ -124,7 +180,22 @@ class PermutationFamily {
         if (trail_.mirror(e) != EdgeTrail::kNone) refresh(trail_.mirror(e), trail_.entry(e));
       }
     };
+    if (focused()) {
+      backend.for_each(ants.size(),
+                       [&](std::size_t a) { construct(a, ants[a].path, rngs[a], rule); });
+      for (std::size_t a = 0; a < ants.size(); ++a) {
+        const std::vector<std::uint32_t>& added = scratch_[a].new_edges;
+        for (std::size_t e = 0; e < added.size(); e += 2) local(added[e], added[e + 1]);
+      }
+      return;
+    }
+    for (std::size_t a = 0; a < ants.size(); ++a)
+      begin(scratch_[a], ants[a].path, rngs[a].below(n_));
     for (std::uint32_t step = 1; step < n_; ++step) {
+      if (step % kStopPoll == 0 && stop_.expired()) {
+        for (std::size_t a = 0; a < ants.size(); ++a) complete(scratch_[a], ants[a].path.data());
+        return;
+      }
       backend.for_each(ants.size(), [&](std::size_t a) {
         std::uint32_t* t = ants[a].path.data();
         visit(scratch_[a], t, choose_next(scratch_[a], t[step - 1], rngs[a], rule));
@@ -136,6 +207,7 @@ class PermutationFamily {
 
  private:
   static constexpr std::uint32_t kNone = EdgeTrail::kNone;
+  static constexpr std::uint32_t kStopPoll = 1024;  ///< steps between looks at the stop token
   static constexpr bool kHasNearestSearch = PermutationProblemWithNearestSearch<P>;
   using NearestSearch = typename detail::NearestSearchOf<P>::type;
 
@@ -149,6 +221,7 @@ class PermutationFamily {
     std::uint32_t length = 0;                    // cities placed in the tour so far
     std::vector<double> weight;                  // weights of the feasible candidates
     std::vector<std::uint32_t> node;             // the feasible candidates
+    std::vector<std::uint32_t> new_edges;        // focused construction: edges not in the source
     [[no_unique_address]] NearestSearch search;  // the problem's fallback search, if any
   };
 
@@ -181,6 +254,13 @@ class PermutationFamily {
   /// Starts a tour at `start`; returns where its cities go (the vector is sized once, so that
   /// steps write only to its buffer, never to the vector itself).
   std::uint32_t* begin(Scratch& s, std::vector<std::uint32_t>& tour, std::uint32_t start) const {
+    std::uint32_t* t = clear(s, tour);
+    visit(s, t, start);
+    return t;
+  }
+
+  /// An empty tour: every city unvisited.
+  std::uint32_t* clear(Scratch& s, std::vector<std::uint32_t>& tour) const {
     std::fill(s.visited.begin(), s.visited.end(), 0);
     if constexpr (kHasNearestSearch) {
       s.search.reset();
@@ -190,7 +270,6 @@ class PermutationFamily {
     }
     tour.resize(n_);
     s.length = 0;
-    visit(s, tour.data(), start);
     return tour.data();
   }
 
@@ -204,6 +283,12 @@ class PermutationFamily {
       s.unvisited[s.slot[node]] = last;
       s.slot[last] = s.slot[node];
     }
+  }
+
+  /// Appends the unvisited nodes in index order: a valid tour at once when time is up.
+  void complete(Scratch& s, std::uint32_t* tour) const {
+    for (std::uint32_t i = 0; i < n_ && s.length < n_; ++i)
+      if (s.visited[i] == 0) visit(s, tour, i);
   }
 
   template <class Rule>
@@ -244,12 +329,15 @@ class PermutationFamily {
 
   const P* problem_;
   std::uint32_t n_;
+  std::size_t min_new_edges_ = 0;  // 0: tours are built from nothing
+  SourceTour source_;
   std::size_t k_ = 0;
   double alpha_;
   EdgeTrail trail_;
   std::vector<double> eta_beta_;
   std::vector<double> weight_;
   std::vector<Scratch> scratch_;
+  StopToken stop_;  ///< never expires unless set_stop() says otherwise
 };
 
 }  // namespace antslam::aco

@@ -19,6 +19,8 @@ struct InitContext {
   std::size_t decisions = 1;    ///< decisions per solution (cities; layers)
   double mean_options = 2.0;    ///< mean number of options per decision
   bool local_search = false;    ///< whether a local search improves the ants
+  bool focused = false;         ///< whether ants change a source tour (focused_construction.hpp)
+  double max_options = 2.0;     ///< options of the widest decision (TSP: candidate-list length)
 };
 
 struct IterationView {

@@ -28,6 +28,8 @@ class MaxMinUpdate {
     decisions_ = static_cast<double>(c.decisions);
     mean_options_ = c.mean_options;
     local_search_ = c.local_search;
+    focused_ = c.focused;
+    max_options_ = c.max_options;
     bounds_from_best_ = false;
     bounds_cost_ = c.reference_cost;
     set_bounds(c.reference_cost);
@@ -76,10 +78,17 @@ class MaxMinUpdate {
 
  private:
   /// tau_max = 1 / (rho L_best); tau_min from p_best (Stuetzle & Hoos 2000, eq. 11), or
-  /// tau_max / 2n with local search (ACOTSP).
+  /// tau_max / 2n with local search (ACOTSP). Focused ants decide only where they leave the
+  /// source, among the candidates: eq. 11 over one candidate list (n and avg both the list
+  /// length, as FocusedACO with local search), which keeps leaving the source likely enough
+  /// that an ant reaches its new edges in a few steps.
   void set_bounds(double best_cost) {
     tau_max_ = 1.0 / (s_.rho * std::max(best_cost, 1e-12));
-    if (local_search_) {
+    if (focused_) {
+      const double k = std::max(max_options_, 2.0);
+      const double p_dec = std::pow(s_.p_best, 1.0 / k);
+      tau_min_ = tau_max_ * (1.0 - p_dec) / ((k - 1.0) * p_dec);
+    } else if (local_search_) {
       tau_min_ = tau_max_ / (2.0 * decisions_);
     } else {
       const double p_dec = std::pow(s_.p_best, 1.0 / decisions_);
@@ -103,6 +112,8 @@ class MaxMinUpdate {
   double decisions_ = 1.0;
   double mean_options_ = 2.0;
   bool local_search_ = false;
+  bool focused_ = false;
+  double max_options_ = 2.0;
   bool bounds_from_best_ = false;
   double bounds_cost_ = 0.0;
   double tau_max_ = 0.0;

@@ -41,6 +41,7 @@ struct Parameters {
   double rho = 0.0;                   ///< evaporation rate of eq. (2); 0 = default (table above)
   std::uint64_t seed = 1;             ///< seed of every random stream
   std::size_t local_search_ants = 0;  ///< 0: local search on every ant; k: on the k best
+  FocusedSettings focused{};  ///< focused construction (permutation problems); off by default
   // Ant Colony System
   double q0 = 0.9;  ///< probability of the greedy choice
   double xi = 0.1;  ///< local evaporation rate
@@ -145,6 +146,7 @@ inline ColonySettings colony_settings(const Parameters& p, std::size_t decisions
   settings.beta = p.beta;
   settings.seed = p.seed;
   settings.local_search_ants = p.local_search_ants;
+  settings.focused = p.focused;
   return settings;
 }
 

@@ -23,6 +23,9 @@
 
 namespace antslam::baselines {
 
+/// The most draws without improvement a search may make (a search of more never ends in time).
+inline constexpr std::size_t kMaxStop = 1'000'000;
+
 struct TinySlamSettings {
   double resolution = 0.025;           ///< metres per map cell (tinySLAM: 1 cm)
   double min_range = 0.1;              ///< metres; shorter readings are dropped

@@ -10,6 +10,7 @@
 // in the grid's frame, so grids that grow keep their values and cell indices.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -17,6 +18,19 @@
 #include <vector>
 
 namespace antslam::frontend {
+
+/// floor(v) as a lattice index, v clamped to +-2^52 first: casting a larger (or non-finite)
+/// double to an integer is undefined, and a grid that large is refused anyway (kMaxGridCells).
+inline std::int64_t floor_index(double v) {
+  constexpr double kLimit = 4503599627370496.0;  // 2^52
+  return static_cast<std::int64_t>(
+      std::floor(std::isnan(v) ? 0.0 : std::clamp(v, -kLimit, kLimit)));
+}
+
+/// The most cells a grid of the frontend may have (1 GB of floats): a log whose poses or ranges
+/// would need a larger one is implausible (a laser 1e308 m ahead of the robot), and is refused
+/// with one line instead of exhausting memory.
+inline constexpr double kMaxGridCells = 268435456.0;  // 2^28
 
 /// An axis-aligned box of lattice cells, inclusive bounds.
 struct CellBox {
@@ -49,7 +63,8 @@ class DistanceField {
   /// frame, metres). Grows the grid as needed.
   void insert(std::span<const Eigen::Vector2d> points);
 
-  /// Grows the grid (new cells at max_distance) so that it holds every cell of `box`.
+  /// Grows the grid (new cells at max_distance) so that it holds every cell of `box`. Throws
+  /// std::runtime_error if it would need more than kMaxGridCells cells.
   void cover(const CellBox& box);
 
   /// The covered cells (empty before the first insert or cover).
@@ -65,7 +80,7 @@ class DistanceField {
   double interpolate(const Eigen::Vector2d& p, Eigen::Vector2d* gradient = nullptr) const;
 
  private:
-  static std::int64_t nearest(double v) { return static_cast<std::int64_t>(std::floor(v + 0.5)); }
+  static std::int64_t nearest(double v) { return floor_index(v + 0.5); }
   double resolution_;
   double max_distance_;
   CellBox bounds_;

@@ -27,11 +27,25 @@ struct FrontendSettings {
 void validate(const FrontendSettings& settings);
 
 struct FrontendStats {
-  std::size_t scans = 0;          ///< scans processed
-  std::size_t unmatched = 0;      ///< scans that kept the odometry (too few points)
-  std::size_t recovered = 0;      ///< scans matched in the wide recovery window
-  double matching_seconds = 0.0;  ///< wall time of scan matching and fragmentation
-  double closure_seconds = 0.0;   ///< wall time of loop-closure detection and matching
+  std::size_t scans = 0;      ///< scans processed
+  std::size_t unmatched = 0;  ///< scans that kept the odometry (too few points)
+  std::size_t recovered = 0;  ///< scans matched in the wide recovery window
+  std::size_t diverged = 0;   ///< scans whose match contradicted the odometry: odometry kept
+  std::size_t odometry_along_flat = 0;  ///< scans flatter than the odometry in a direction
+  double matching_seconds = 0.0;        ///< wall time of scan matching and fragmentation
+  double closure_seconds = 0.0;         ///< wall time of loop-closure detection and matching
+};
+
+/// How the scan matcher placed one scan.
+struct ScanRecord {
+  MatchStatus status = MatchStatus::first_scan;  ///< matched, recovered, or an odometry fallback
+  double prior_mahalanobis = 0.0;    ///< distance of the match from the odometry prediction (std)
+  double inlier_fraction = 0.0;      ///< share of the scan's points that fit the local map
+  bool odometry_along_flat = false;  ///< the odometry kept the estimate along a flat direction
+  /// The scan matcher placed it (not an odometry fallback; the first scan counts as placed).
+  bool matched_by_scan() const {
+    return status != MatchStatus::too_few_points && status != MatchStatus::diverged;
+  }
 };
 
 struct FrontendResult {
@@ -39,6 +53,7 @@ struct FrontendResult {
   slam::Trajectory trajectory;            ///< scan-matcher robot poses in W (first pose = 0)
   std::vector<FragmentRecord> fragments;  ///< which scans each fragment holds, its frame in W
   std::vector<ClosureAttempt> attempts;   ///< every closure candidate matched, accepted or not
+  std::vector<ScanRecord> scans;          ///< per scan of the log, in order
   FrontendStats stats;
 };
 
@@ -63,6 +78,7 @@ class Frontend {
   Fragmenter fragmenter_;
   LoopCloser closer_;
   slam::Trajectory trajectory_;
+  std::vector<ScanRecord> records_;
   FrontendStats stats_;
 };
 

@@ -21,9 +21,7 @@ class LikelihoodPyramid {
   int levels() const { return static_cast<int>(grids_.size()); }
   double resolution() const { return resolution_; }
   /// Lattice cell of a point (the field's lattice).
-  std::int64_t cell(double v) const {
-    return static_cast<std::int64_t>(std::floor(v / resolution_ + 0.5));
-  }
+  std::int64_t cell(double v) const { return floor_index(v / resolution_ + 0.5); }
 
   /// The grid of one level: values at (x - x0, y - y0) row-major with `width` columns; the
   /// covered cells are the same for every level.

@@ -1,7 +1,9 @@
 #pragma once
 // Loop-closure detection (paper Sec. III-A, after ref. [14]): when a fragment is complete, every
 // earlier fragment whose poses the fragment's uncertainty ellipse reaches is a candidate; the
-// nearest candidates are matched (match_fragments) and the best accepted match becomes a loop
+// nearest candidates are matched (match_fragments) against the map of the candidate and its
+// neighbours (a few fragments on each side, as the scan matcher placed them: a later visit
+// seldom sees exactly what one fragment saw), and the best accepted match becomes a loop
 // closure (a, b) with anchor E_b and hypothesis N(mu_H, Sigma_H). Every accepted closure is kept
 // (several loops), and each one also shrinks the uncertainty between the places it joins.
 
@@ -52,8 +54,10 @@ class LoopCloser {
   };
   std::vector<Candidate> candidates(std::size_t b, const Fragmenter& fragmenter) const;
   std::vector<GraphEdge> edges(std::size_t b, const Fragmenter& fragmenter) const;
-  /// The map of fragment a, from a small cache (neighbouring fragments try the same targets).
-  const FragmentMap& target(std::size_t a);
+  /// The map that fragment b is matched against for a closure with fragment a: fragments
+  /// a - target_neighbours .. a + target_neighbours (none within min_fragment_gap of b) in F_a,
+  /// from a small cache (neighbouring fragments try the same targets).
+  const FragmentMap& target(std::size_t a, std::size_t b, const Fragmenter& fragmenter);
 
   LoopClosureSettings settings_;
   std::vector<Points> matched_;  ///< per fragment, thinned
@@ -61,7 +65,8 @@ class LoopCloser {
   std::vector<slam::LoopClosure> closures_;
   std::vector<GraphEdge> closure_edges_;
   std::vector<ClosureAttempt> attempts_;
-  std::deque<std::pair<std::size_t, std::unique_ptr<FragmentMap>>> cache_;  ///< newest first
+  /// Target maps by (a, last fragment in it), newest first.
+  std::deque<std::pair<std::pair<std::size_t, std::size_t>, std::unique_ptr<FragmentMap>>> cache_;
 };
 
 }  // namespace antslam::frontend

@@ -21,28 +21,30 @@
 namespace antslam::frontend {
 
 struct LoopClosureSettings {
-  bool enabled = true;               ///< look for loop closures at all
-  double resolution = 0.1;           ///< metres, cell of fragment maps and of the B&B lattice
-  double sigma = 0.1;                ///< metres, likelihood std of closure scores
-  int levels = 6;                    ///< B&B pyramid levels (top block 2^(levels-1) cells)
-  double point_spacing = 0.1;        ///< metres, thinning of the matched fragment's points
-  double max_range = 20.0;           ///< metres; longer readings stay out of fragment maps
-  double min_score = 0.6;            ///< mean point likelihood in [0, 1] a closure needs
-  double max_second_ratio = 0.9;     ///< reject if a separate peak scores this share of the best
-  double exclusion_linear = 1.0;     ///< metres; a "separate" peak lies further than this ...
-  double exclusion_angular = 0.3;    ///< ... or turned more than this many radians
-  double window_sigmas = 3.0;        ///< window half-width in standard deviations
-  double min_window_linear = 1.0;    ///< metres, smallest window half-width in x and y
-  double max_window_linear = 8.0;    ///< metres, largest window half-width in x and y
-  double min_window_angular = 0.1;   ///< radians, smallest heading half-width
-  double max_window_angular = 3.14;  ///< radians, largest heading half-width
-  std::size_t min_fragment_gap = 3;  ///< b - a >= this for a candidate pair (a, b)
-  double overlap_radius = 3.0;       ///< metres; robot poses this close see the same place
-  double min_uncertainty = 0.3;      ///< metres (3 sigma); pairs already known better are skipped
-  std::size_t max_attempts = 3;      ///< candidate pairs tried per fragment (nearest first)
-  double temperature = 15.0;         ///< divides the closure log-likelihood: 1 is honest on
-                                     ///< simulated loops, 15 on real logs (docs/frontend.md)
-  PosteriorSettings posterior;       ///< candidate box of eqs. (5)-(6) around H
+  bool enabled = true;                ///< look for loop closures at all
+  double resolution = 0.1;            ///< metres, cell of fragment maps and of the B&B lattice
+  double sigma = 0.1;                 ///< metres, likelihood std of closure scores
+  int levels = 6;                     ///< B&B pyramid levels (top block 2^(levels-1) cells)
+  double point_spacing = 0.1;         ///< metres, thinning of the matched fragment's points
+  double max_range = 20.0;            ///< metres; longer readings stay out of fragment maps
+  double min_score = 0.6;             ///< mean point likelihood in [0, 1] a closure needs
+  double max_second_ratio = 0.9;      ///< reject if a separate peak scores this share of the best
+  double exclusion_linear = 1.0;      ///< metres; a "separate" peak lies further than this ...
+  double exclusion_angular = 0.3;     ///< ... or turned more than this many radians
+  double window_sigmas = 3.0;         ///< window half-width in standard deviations
+  double min_window_linear = 1.0;     ///< metres, smallest window half-width in x and y
+  double max_window_linear = 8.0;     ///< metres, largest window half-width in x and y
+  double min_window_angular = 0.1;    ///< radians, smallest heading half-width
+  double max_window_angular = 3.14;   ///< radians, largest heading half-width
+  std::size_t min_fragment_gap = 3;   ///< b - a >= this for a candidate pair (a, b)
+  std::size_t target_neighbours = 3;  ///< fragments on each side of a that join its target map
+                                      ///< (3: leave-one-log-out, docs/generalisation.md)
+  double overlap_radius = 3.0;        ///< metres; robot poses this close see the same place
+  double min_uncertainty = 0.3;       ///< metres (3 sigma); pairs already known better are skipped
+  std::size_t max_attempts = 3;       ///< candidate pairs tried per fragment (nearest first)
+  double temperature = 15.0;          ///< divides the closure log-likelihood: 1 is honest on
+                                      ///< simulated loops, 15 on real logs (docs/frontend.md)
+  PosteriorSettings posterior;        ///< candidate box of eqs. (5)-(6) around H
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.

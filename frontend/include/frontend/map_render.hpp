@@ -23,7 +23,8 @@ struct MapRenderSettings {
   double margin = 1.0;                ///< metres of border around the map
   bool tint_alternate = true;         ///< every second fragment's walls in red (Fig. 4)
   bool draw_frames = true;            ///< draw each fragment frame F_i (= E_{i-1}) as axes
-  std::size_t max_pixels = 50000000;  ///< refuse larger maps (a wrong pose would make one huge)
+  std::size_t max_pixels = 50000000;  ///< pixels at most (count): render_map refuses larger maps,
+                                      ///< fitting_resolution coarsens the cell to fit
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.
@@ -36,6 +37,14 @@ struct MapScan {
   slam::Pose2 robot;     ///< robot pose in the fragment's frame
 };
 using MapLayout = std::vector<std::vector<MapScan>>;
+
+/// The finest cell size, not finer than settings.resolution and in whole millimetres when
+/// coarsened, at which the map of every placement in `trials` fits settings.max_pixels (a large
+/// outdoor log drawn at 5 cm would not). Throws std::invalid_argument like render_map for
+/// wrong sizes or non-finite frames.
+double fitting_resolution(const LaserLog& log, const MapLayout& layout,
+                          std::span<const std::vector<slam::Pose2>> trials,
+                          const MapRenderSettings& settings);
 
 /// The layout of a frontend run: every scan in the fragment it belongs to.
 MapLayout map_layout(const FrontendResult& result);

@@ -11,14 +11,22 @@
 // over the search window; around each of the best few coarse peaks, the same on the fine field;
 // Levenberg-Marquardt on the interpolated fine field from the best; then eqs. (5)-(6). A poor
 // fit (odometry stall or jump) triggers a search of a wide recovery window.
+//
+// The odometry is the prior (odometry_prior.hpp): its step covariance widens the search window
+// for long steps; a match further from the prediction than divergence_sigmas that fits fewer
+// than trusted_fit of its points is a wrong peak, and the scan keeps the odometry prediction
+// with an inflated covariance; otherwise the match is fused with the prediction, so that along
+// a direction the scan cannot pin down (a corridor) the odometry keeps the estimate.
 
 #include <cstddef>
 #include <deque>
 #include <optional>
+#include <string_view>
 
 #include "frontend/correlative_search.hpp"
 #include "frontend/distance_field.hpp"
 #include "frontend/laser_log.hpp"
+#include "frontend/odometry_prior.hpp"
 #include "frontend/pose_likelihood.hpp"
 #include "frontend/scan_points.hpp"
 #include "slamgraph/gaussian2.hpp"
@@ -37,8 +45,12 @@ struct ScanMatcherSettings {
   double coarse_resolution = 0.15;    ///< metres, coarse likelihood-field cell
   double coarse_sigma = 0.2;          ///< metres, coarse likelihood-field std
   double point_spacing = 0.1;         ///< metres, scan thinning for matching
-  double linear_window = 0.5;         ///< metres, search half-width around the prediction
-  double angular_window = 0.35;       ///< radians, search half-width around the prediction
+  double linear_window = 0.5;         ///< metres, search half-width around the prediction (at
+                                      ///< least; window_sigmas of a long step can widen it)
+  double angular_window = 0.35;       ///< radians, search half-width around the prediction (at
+                                      ///< least)
+  double window_sigmas = 3.0;         ///< the window spans this many odometry-step std
+  double max_linear_window = 3.0;     ///< metres, widest search half-width
   double coarse_angular_step = 0.02;  ///< radians between headings of the coarse search
   double fine_angular_step = 0.004;   ///< radians between headings of the fine search
   std::size_t coarse_peaks = 3;       ///< best coarse peaks refined on the fine field
@@ -53,22 +65,45 @@ struct ScanMatcherSettings {
                                          ///< simulated scans, docs/frontend.md)
   double local_map_length = 10.0;        ///< metres of travel a submap spans
   std::size_t min_points = 20;           ///< fewer matching points: keep the odometry prediction
-  double odometry_noise = 0.1;           ///< std per unit of motion (m/m, rad/rad) when not matched
-  PosteriorSettings posterior;           ///< candidate box of eqs. (5)-(6)
+  OdometryPrior odometry;                ///< step covariance of the odometry (the prior)
+  double divergence_sigmas = 4.0;        ///< a match further from the prediction (Mahalanobis, step
+                                   ///< covariance plus the match's) contradicts the odometry ...
+  double trusted_fit = 0.8;         ///< ... and is kept only if this share of its points fit
+  double fallback_inflation = 4.0;  ///< multiplies the step covariance when the odometry is kept
+  PosteriorSettings posterior;      ///< candidate box of eqs. (5)-(6)
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.
 void validate(const ScanMatcherSettings& settings);
 
+/// How a scan's pose was found.
+enum class MatchStatus {
+  first_scan,      ///< the first scan defines the frame
+  matched,         ///< matched in the window around the odometry prediction
+  recovered,       ///< matched in the wide recovery window (the odometry had failed)
+  too_few_points,  ///< fewer than min_points to match: the odometry prediction, inflated
+  diverged,        ///< the match contradicted the odometry without fitting well enough to
+                   ///< overrule it (a wrong peak): the odometry prediction, inflated
+};
+
+std::string_view to_string(MatchStatus status);
+
 struct MatchResult {
-  slam::Gaussian2 gaussian;      ///< N(mu, Sigma) of the robot pose in the matcher's frame
-  slam::Pose2 best;              ///< the most likely pose found (the centre of eqs. (5)-(6))
-  bool matched = false;          ///< false: first scan or too few points; odometry used
-  double mean_distance = 0.0;    ///< metres, RMS distance of the points to the map at mu
-  double inlier_fraction = 0.0;  ///< share of points within inlier_distance of a map hit at mu
-  bool recovered = false;        ///< the recovery window gave the result
-  std::size_t points = 0;        ///< points used for matching
+  slam::Gaussian2 gaussian;  ///< N(mu, Sigma) of the robot pose in the matcher's frame
+  slam::Pose2 best;          ///< the most likely pose found (the centre of eqs. (5)-(6))
+  MatchStatus status = MatchStatus::first_scan;  ///< how the pose was found
+  bool odometry_along_flat = false;  ///< the scan was flatter than the odometry in a direction:
+                                     ///< the fused estimate follows the odometry along it
+  double prior_mahalanobis = 0.0;    ///< distance of the match from the odometry prediction
+                                     ///< (standard deviations; 0 without a prediction)
+  double mean_distance = 0.0;        ///< metres, RMS distance of the points to the map at mu
+  double inlier_fraction = 0.0;      ///< share of points within inlier_distance of a map hit at mu
+  std::size_t points = 0;            ///< points used for matching
   const slam::Pose2& pose() const { return gaussian.mean(); }
+  /// The scan's own match gave the pose (not the odometry).
+  bool matched() const {
+    return status == MatchStatus::matched || status == MatchStatus::recovered;
+  }
 };
 
 /// The points of a scan that are matched (robot frame): returns on a surface, within
@@ -87,8 +122,17 @@ class ScanMatcher {
   MatchResult add_scan(const LaserScan& scan);
 
   /// The pose and Gaussian of a scan's matching points (robot frame) against the current local
-  /// map, searching around `prediction`; the map is not changed (apart from growing its grids).
-  MatchResult match(const Points& points, const slam::Pose2& prediction);
+  /// map, searching around `prediction` within window_sigmas of `prediction_covariance` (W
+  /// axes; at least the settings' window); the map is not changed (apart from growing its
+  /// grids). The odometry checks are add_scan's.
+  MatchResult match(const Points& points, const slam::Pose2& prediction,
+                    const Eigen::Matrix3d& prediction_covariance = Eigen::Matrix3d::Zero());
+
+  /// The match checked against the odometry prediction N(prediction) (W axes): within
+  /// divergence_sigmas it is fused with the prediction; further off it is kept as it is if at
+  /// least trusted_fit of its points fit (it overrules a failed odometry), else the scan takes
+  /// the prediction with fallback_inflation times its covariance (status diverged).
+  MatchResult check_against(MatchResult match, const slam::Gaussian2& prediction) const;
 
   /// Adds map points (robot frame) seen from `pose` to the local map.
   void insert(const Points& points, const slam::Pose2& pose);

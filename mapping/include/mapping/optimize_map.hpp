@@ -6,10 +6,12 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "frontend/frontend.hpp"
+#include "mapping/close_loops.hpp"
 #include "slamgraph/optimize.hpp"
 #include "slamgraph/trajectory.hpp"
 
@@ -24,6 +26,7 @@ struct MappingSettings {
   std::size_t threads = 1;  ///< threads the trials run on (0 = all cores); results do not
                             ///< depend on it
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the trials in parallel
+  ClosingSettings closing;  ///< then close the loops with the trusted closures (close_loops.hpp)
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.
@@ -45,10 +48,14 @@ std::vector<ClosureResidual> closure_residuals(const slam::FragmentSet& set,
 struct MappingResult {
   std::vector<slam::OptimizeResult> trials;      ///< every trial, in trial order
   std::size_t best = 0;                          ///< trial with the lowest weight (first on ties)
+  std::optional<Closing> closing;                ///< the loops closed (when enabled)
+  std::vector<slam::Pose2> frames;               ///< the map: the closed frames, else the best
+                                                 ///< trial's
+  slam::Scores scores;                           ///< eq. (10) and chi2 of the map
   std::vector<slam::Pose2> scan_matcher_frames;  ///< F_i in W from the means mu_i (eq. 8)
-  slam::Trajectory corrected;                    ///< every scan's pose in W under the best trial
+  slam::Trajectory corrected;                    ///< every scan's pose in W under the map
   std::vector<ClosureResidual> before;           ///< closures under the scan-matcher frames
-  std::vector<ClosureResidual> after;            ///< closures under the best trial's frames
+  std::vector<ClosureResidual> after;            ///< closures under the map's frames
   slam::Scores scan_matcher;                     ///< eq. (10) and chi2 of the scan-matcher map
   double seconds = 0.0;                          ///< wall-clock time of the optimisation
 };
@@ -57,7 +64,9 @@ struct MappingResult {
 using TrialObserver = std::function<void(std::size_t finished)>;
 
 /// Optimises the fragment set of a frontend run: settings.trials trials of
-/// settings.optimize.method, trial t seeded with slam::trial_seed(settings.optimize.seed, t).
+/// settings.optimize.method, trial t seeded with slam::trial_seed(settings.optimize.seed, t);
+/// then, if settings.closing.enabled, closes the loops with the trusted closures from the best
+/// trial's frames (close_loops.hpp): that is the map.
 /// Throws std::invalid_argument if the set has no loop closure (nothing to optimise) or the
 /// settings are invalid.
 MappingResult optimize_map(const slam::FragmentSet& set, const MappingSettings& settings,

@@ -17,6 +17,7 @@
 #include "frontend/laser_log.hpp"
 #include "frontend/map_render.hpp"
 #include "mapping/optimize_map.hpp"
+#include "mapping/verdict.hpp"
 #include "slamgraph/trajectory.hpp"
 
 namespace antslam::mapping {
@@ -38,6 +39,8 @@ struct PipelineMaps {
   frontend::Image scan_matcher;
   frontend::Image optimized;
   frontend::Image average;
+  double resolution = 0.0;  ///< metres per pixel: the settings' unless too many pixels for
+                            ///< max_pixels, then the finest that fits (a warning says so)
 };
 
 /// Scan-matcher and optimized trajectories against a reference (antslam eval's figures).
@@ -59,8 +62,10 @@ struct PipelineResult {
   frontend::LaserLog log;                   ///< the log as read (geometry applied)
   frontend::FrontendResult frontend;        ///< fragment set, scan-matcher trajectory, closures
   MappingResult mapping;                    ///< the trials and the corrected trajectory
-  std::optional<PipelineMaps> maps;         ///< when settings.draw_maps
+  std::optional<PipelineMaps> maps;         ///< when settings.draw_maps and they could be drawn
   std::optional<MapEvaluation> evaluation;  ///< when a reference was given
+  std::vector<std::string> warnings;        ///< the log's (sensor_check.hpp), the maps'
+  Verdict verdict;                          ///< is the map doubtful (verdict.hpp)
   PipelineTimes times;
 };
 
@@ -75,7 +80,7 @@ struct Reference {
 
 /// Runs the pipeline on a log held in memory (its `source` names the fragment set). Throws
 /// std::invalid_argument for invalid settings and when the frontend finds no loop closure
-/// (nothing to optimise).
+/// (nothing to optimise); a map that cannot be drawn is a warning, never an error.
 PipelineResult run_pipeline(frontend::LaserLog log, const PipelineSettings& settings,
                             const std::optional<Reference>& reference = std::nullopt,
                             const StageObserver& observer = {});

@@ -33,6 +33,11 @@ struct CeresResult {
   bool converged = false;     ///< Ceres reported convergence
 };
 
+/// Whether Ceres prints its own warnings and diagnostics (through glog) on stderr. They are
+/// shown unless this is called with false; antslam shows them only with --verbose, so that a
+/// failure is the one line its error names.
+void show_solver_logs(bool show);
+
 /// Runs Ceres from the world frames that `initial` alignments chain to (alignments.size() ==
 /// N - 1). Throws std::invalid_argument on wrong sizes, std::runtime_error if Ceres fails.
 CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> initial, bool robust,

@@ -53,10 +53,18 @@ struct FragmentSet {
   std::size_t layer_count() const { return fragments.empty() ? 0 : fragments.size() - 1; }
 };
 
+/// The variances (diagonal of a covariance, m^2 or rad^2) and information entries (diagonal of
+/// its inverse) a set may hold at most: beyond, a Mahalanobis distance through them could
+/// overflow (eq. 10 would read inf) or lose every digit. A standard deviation of 1e9 m or 1e-9 m
+/// is already far outside any sensor's.
+inline constexpr double kMaxVariance = 1e18;
+inline constexpr double kMaxInformation = 1e18;
+
 /// Throws std::invalid_argument with a one-line message naming the problem (e.g.
 /// "fragments[3].samples is empty") if the set is not usable: fewer than 2 fragments, a missing
-/// alignment or samples after the first fragment, non-finite numbers, no closure, a closure
-/// with from >= to or an index out of range, or a reference of the wrong size.
+/// alignment or samples after the first fragment, non-finite numbers, positions beyond
+/// kMaxCoordinate, timestamps beyond kMaxTimestamp, a covariance beyond the limits above, no
+/// closure, a closure with from >= to or an index out of range, or a reference of the wrong size.
 void validate(const FragmentSet& set);
 
 /// The alignments X_1..X_{N-1} that a choice of one sample per fragment 2..N selects.

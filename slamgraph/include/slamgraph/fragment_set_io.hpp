@@ -16,6 +16,11 @@ namespace antslam::slam {
 inline constexpr const char* kFragmentSetFormat = "antslam-fragment-set";
 inline constexpr int kFragmentSetVersion = 1;
 
+/// Bytes a set of this size takes in memory and while it is written (the JSON document of the
+/// writer dominates), for refusing sizes that cannot fit before building the set.
+double fragment_set_bytes(std::size_t fragments, std::size_t samples_per_fragment,
+                          std::size_t trajectory_poses_per_fragment);
+
 /// Writes the set (validated first) with round-trip precision.
 void write_fragment_set(std::ostream& out, const FragmentSet& set);
 /// Throws std::runtime_error "source: field: problem".

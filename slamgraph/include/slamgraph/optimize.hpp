@@ -54,11 +54,15 @@ bool is_discrete(Method m);
 /// The engine variant of an ACO method (hybrid+nlopt: hybrid), none for the others.
 std::optional<aco::Variant> aco_variant(Method m);
 
+/// The most ants per iteration validate() accepts.
+inline constexpr std::size_t kMaxAnts = 100000;
+
 struct OptimizeSettings {
   Method method = Method::hybrid;   ///< algorithm (table above)
   std::uint64_t seed = 1;           ///< seeds every random choice (overrides aco.seed)
   std::uint64_t iterations = 3000;  ///< ACO iterations (iter_max, paper Sec. IV); random: rounds
-  double time_limit_s = 0.0;        ///< wall-clock budget of ACO / random in seconds; 0 = none
+  double time_limit_s = 0.0;        ///< wall-clock budget of the whole run in seconds (ants, random
+                                    ///< rounds, NLopt and Ceres share it); 0 = none
   std::size_t threads = 1;  ///< threads for the ants of one run; results do not depend on it
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the ants of one iteration
   aco::Parameters aco;    ///< engine parameters (ants, rho, p0, ...); variant from method

@@ -74,6 +74,10 @@ class Refiner {
   Refiner(const FragmentSet& set, const RefineSettings& settings);
 
   RefineResult refine(std::span<const Pose2> start);
+  /// The same within `seconds` of wall-clock time (0 = no limit) instead of
+  /// settings.time_limit_s: NLopt stops at the first evaluation past it, and no graduated stage
+  /// starts after it. A caller with an overall budget passes what is left of it.
+  RefineResult refine(std::span<const Pose2> start, double seconds);
 
   /// The box of alignment i (0-based layer), as packed vectors (x, y, theta).
   std::span<const double> lower() const { return lower_; }

@@ -21,6 +21,13 @@
 
 namespace antslam::slam {
 
+/// Size limits of synthesize(): beyond them a set takes gigabytes to hold and write, and with
+/// more than one lap the revisit search over every pair of fragments takes minutes.
+inline constexpr std::size_t kMaxSynthFragments = 1'000'000;
+inline constexpr std::size_t kMaxSynthSamples = 1'000'000;
+inline constexpr std::size_t kMaxRevisitFragments = 20'000;
+inline constexpr std::size_t kMaxSynthClosures = 1'000'000;
+
 struct SynthSettings {
   std::size_t fragments = 9;          ///< N
   std::size_t samples = 20;           ///< M samples per alignment (eq. 7)
@@ -43,7 +50,9 @@ struct SynthSettings {
 /// all with M = 20. Throws std::invalid_argument listing the names.
 SynthSettings synth_preset(std::string_view name);
 
-/// Throws std::invalid_argument naming the setting if it is out of range.
+/// Throws std::invalid_argument naming the setting if it is out of range (the limits above; loop
+/// length up to 1e6 m, standard deviations up to 1000 m and 10 rad, up to 1000 laps and 10000
+/// trajectory poses per fragment).
 FragmentSet synthesize(const SynthSettings& settings);
 
 }  // namespace antslam::slam

@@ -46,6 +46,11 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
                                        const TrialsObserver& observer = {},
                                        const OptimizeObserver& convergence = {});
 
+/// Bytes one trial's result holds for this many poses (fragments or graph vertices: frames,
+/// alignments, choice and a convergence record of typical length), so that a caller can refuse
+/// a trial count that cannot fit in memory before running it.
+double trial_result_bytes(std::size_t poses);
+
 /// The trial with the lowest eq. (10) weight (the first on ties); throws on an empty span.
 std::size_t best_trial(std::span<const OptimizeResult> trials);
 

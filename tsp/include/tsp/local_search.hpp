@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -72,7 +73,21 @@ class TourLocalSearch {
   void improve(const TspProblem& problem, std::vector<std::uint32_t>& tour, Workspace& workspace,
                aco::Rng& rng, const aco::StopToken& stop) const;
 
+  /// The same search started from the endpoints of `new_edges` only (city pairs: the edges of
+  /// `tour` that are not in a local optimum of this neighbourhood, as a focused construction
+  /// reports them; aco::LocalSearchFromCities). Apart from copying the tour it costs O(changes).
+  void improve(const TspProblem& problem, std::vector<std::uint32_t>& tour, Workspace& workspace,
+               aco::Rng& rng, const aco::StopToken& stop,
+               std::span<const std::uint32_t> new_edges) const;
+
  private:
+  /// Resets the stats and loads `tour`; false when there is nothing to search.
+  bool begin(const TspProblem& problem, const std::vector<std::uint32_t>& tour,
+             Workspace& workspace) const;
+  /// Runs the don't-look-bit queue (its first `count` entries active) and writes the result.
+  void search(const TspProblem& problem, std::vector<std::uint32_t>& tour, Workspace& workspace,
+              std::uint32_t count, const aco::StopToken& stop) const;
+
   LocalSearchSettings settings_;
 };
 

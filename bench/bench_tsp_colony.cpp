@@ -1,0 +1,57 @@
+// Iterations per second of the TSP's default colony (MAX-MIN + 3-opt with focused construction,
+// tsp::SolverSettings{}) on a seeded random uniform instance, against the thread count. The
+// colony first runs 20 iterations untimed (the first builds every tour from nothing and searches
+// it from every city; focused construction starts with the second), then each benchmark
+// iteration is one colony iteration. Results are bit-identical for every thread count (tested
+// in tests/tsp and tests/contract), so the ratio of the rates is the speed-up.
+//
+//   build/bench/bench_tsp_colony --benchmark_filter=ColonyStep
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "aco/backend_factory.hpp"
+#include "aco/variants.hpp"
+#include "tsp/generator.hpp"
+#include "tsp/local_search.hpp"
+#include "tsp/problem.hpp"
+#include "tsp/solver.hpp"
+
+namespace {
+
+using namespace antslam;
+
+const tsp::TspProblem& uniform_problem(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<tsp::TspProblem>> cache;
+  auto& slot = cache[n];
+  if (!slot) slot = std::make_unique<tsp::TspProblem>(tsp::random_uniform_instance(n, 1));
+  return *slot;
+}
+
+/// Arguments: cities, threads.
+void BM_ColonyStep(benchmark::State& state) {
+  const tsp::TspProblem& p = uniform_problem(static_cast<std::size_t>(state.range(0)));
+  const auto threads = static_cast<std::size_t>(state.range(1));
+  const tsp::SolverSettings settings;
+  const aco::Parameters parameters = tsp::resolved_parameters(p, settings);
+  aco::with_colony(p, parameters, aco::make_backend(aco::BackendKind::automatic, threads),
+                   tsp::TourLocalSearch(settings.local_search), [&](auto& colony) {
+                     for (int warm = 0; warm < 20; ++warm) colony.step();
+                     for (auto _ : state) colony.step();
+                     state.counters["best"] = colony.best().cost;
+                     return 0;
+                   });
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_ColonyStep)
+    ->ArgsProduct({{15000}, {1, 2}})
+    ->ArgNames({"cities", "threads"})
+    ->MinTime(5.0)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
