@@ -36,10 +36,12 @@ void add_frontend_options(CLI::App& command, FrontendOptions& o) {
       .add_option("--divergence-sigmas", o.settings.matcher.divergence_sigmas,
                   "a scan match further from the odometry prediction (standard deviations) "
                   "is kept only if it fits --trusted-fit of its points, else the odometry is")
+      ->check(finite_in(0.0, 1e6))
       ->capture_default_str();
   command
       .add_option("--trusted-fit", o.settings.matcher.trusted_fit,
                   "share of a scan's points that must fit for a match to overrule the odometry")
+      ->check(finite_in(0.0, 1.0))
       ->capture_default_str();
   add_sensor_options(command, o.sensor);
   command.add_flag("--no-closures", o.no_closures, "do not look for loop closures");
@@ -56,6 +58,7 @@ void add_frontend_options(CLI::App& command, FrontendOptions& o) {
   command
       .add_option("--closure-neighbours", o.settings.closure.target_neighbours,
                   "fragments on each side of a closure candidate that join its map")
+      ->check(count_in(0, 20))
       ->capture_default_str();
   command
       .add_option("--closure-temperature", o.settings.closure.temperature,

@@ -3,7 +3,7 @@
 corrected log x odometry-noise levels x seeds, and on the raw logs. Writes generalisation.csv
 (one row per run), table.md (also on stdout) and generalisation.png.
 
-    /usr/bin/python3 experiments/scripts/generalisation.py [--quick] [--seeds 10]
+    /usr/bin/python3 experiments/scripts/generalisation.py [--quick] [--seeds 3]
         [--levels 0.5,1,2] [--jobs 2] [--data DIR] [--logs a,b] [--out results/generalisation]
         [--map-option=--opt=value ...] [--sweep option=v1,v2,...] [--publish]
 
@@ -316,7 +316,7 @@ def plot(args, rows):
 
 def main():
     p = parser(__doc__, "generalisation")
-    count_option(p, "--seeds", "noise seeds per noise level", 10, 1)
+    count_option(p, "--seeds", "noise seeds per noise level", 3, 1)
     p.add_argument("--levels", default=None,
                    help="noise levels as multiples of the default noise (0.5,1,2; quick 1)")
     p.add_argument("--jobs", type=integer_at_least(1), default=2,
