@@ -89,8 +89,8 @@ std::vector<std::uint32_t> indices_from(const py::handle& values_in, const std::
   for (py::ssize_t k = 0; k < values.shape(0); ++k) {
     const std::int64_t v = values.at(k);
     if (v < 0 || v > std::int64_t{0xffffffff})
-      throw std::invalid_argument(name + ": entry " + std::to_string(k) + " (" +
-                                  std::to_string(v) + ") is not an index");
+      throw std::invalid_argument(name + ": entry " + std::to_string(k) + " (" + std::to_string(v) +
+                                  ") is not an index");
     out.push_back(static_cast<std::uint32_t>(v));
   }
   return out;

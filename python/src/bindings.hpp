@@ -10,9 +10,9 @@ namespace antslam::python {
 
 namespace py = pybind11;
 
-void bind_engine(py::module_& aco);     ///< engine.cpp: Parameters, Termination, Run
-void bind_layered(py::module_& aco);    ///< layered_bindings.cpp: problems from tables
-void bind_tsp(py::module_& tsp);        ///< tsp_bindings.cpp
+void bind_engine(py::module_& aco);          ///< engine.cpp: Parameters, Termination, Run
+void bind_layered(py::module_& aco);         ///< layered_bindings.cpp: problems from tables
+void bind_tsp(py::module_& tsp);             ///< tsp_bindings.cpp
 void bind_slam_data(py::module_& slam);      ///< slam_data_bindings.cpp: sets and graphs
 void bind_slam_optimize(py::module_& slam);  ///< slam_optimize_bindings.cpp
 void bind_mapping(py::module_& mapping);     ///< mapping_bindings.cpp: the pipeline

@@ -11,12 +11,9 @@ namespace antslam::python {
 aco::Observer colony_observer(const py::object& observer, PythonThread& python) {
   if (observer.is_none()) return {};
   return [&observer, &python](const aco::IterationReport& r) {
-    IterationInfo info{r.iteration,
-                       r.elapsed_s,
-                       r.iteration_best,
-                       r.global_best,
-                       r.improved,
-                       {r.global_best_path.begin(), r.global_best_path.end()}};
+    IterationInfo info{r.iteration,      r.elapsed_s,
+                       r.iteration_best, r.global_best,
+                       r.improved,       {r.global_best_path.begin(), r.global_best_path.end()}};
     python.call([&] { observer(std::move(info)); });
   };
 }
@@ -25,7 +22,8 @@ void bind_engine(py::module_& m) {
   py::class_<aco::Parameters>(m, "Parameters", "Every knob of every ACO variant (aco/variants.hpp)")
       .def(py::init<>())
       .def_property(
-          "variant", [](const aco::Parameters& p) { return std::string(aco::to_string(p.variant)); },
+          "variant",
+          [](const aco::Parameters& p) { return std::string(aco::to_string(p.variant)); },
           [](aco::Parameters& p, const std::string& name) {
             const auto v = aco::parse_variant(name);
             if (!v) {
@@ -77,22 +75,26 @@ void bind_engine(py::module_& m) {
 
   py::class_<aco::RunResult>(m, "Run", "A colony run: the best solution and what ran")
       .def_property_readonly("cost", [](const aco::RunResult& r) { return r.best.cost; })
-      .def_property_readonly("path", [](const aco::RunResult& r) { return index_array(r.best.path); })
+      .def_property_readonly("path",
+                             [](const aco::RunResult& r) { return index_array(r.best.path); })
       .def_readonly("iterations", &aco::RunResult::iterations)
       .def_readonly("best_iteration", &aco::RunResult::best_iteration)
       .def_readonly("elapsed_s", &aco::RunResult::elapsed_s)
       .def_readonly("time_to_best_s", &aco::RunResult::time_to_best_s)
-      .def_property_readonly("stop_reason",
-                             [](const aco::RunResult& r) { return std::string(aco::to_string(r.reason)); })
+      .def_property_readonly(
+          "stop_reason",
+          [](const aco::RunResult& r) { return std::string(aco::to_string(r.reason)); })
       .def_property_readonly("variant",
                              [](const aco::RunResult& r) {
-                               return r.settings.variant ? std::string(aco::to_string(*r.settings.variant))
-                                                         : std::string();
+                               return r.settings.variant
+                                          ? std::string(aco::to_string(*r.settings.variant))
+                                          : std::string();
                              })
       .def_property_readonly("ants", [](const aco::RunResult& r) { return r.settings.colony.ants; })
       .def_property_readonly("rho", [](const aco::RunResult& r) { return r.settings.rho; })
-      .def_property_readonly("backend",
-                             [](const aco::RunResult& r) { return std::string(aco::to_string(r.settings.backend)); })
+      .def_property_readonly(
+          "backend",
+          [](const aco::RunResult& r) { return std::string(aco::to_string(r.settings.backend)); })
       .def_property_readonly("threads", [](const aco::RunResult& r) { return r.settings.threads; });
 }
 

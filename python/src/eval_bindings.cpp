@@ -60,7 +60,8 @@ void bind_eval(py::module_& m) {
   py::class_<eval::AteResult>(m, "Ate")
       .def_property_readonly("alignment",
                              [](const eval::AteResult& a) {
-                               return py::make_tuple(a.alignment.x, a.alignment.y, a.alignment.theta);
+                               return py::make_tuple(a.alignment.x, a.alignment.y,
+                                                     a.alignment.theta);
                              })
       .def_readonly("translation_m", &eval::AteResult::translation_m)
       .def_readonly("rotation_deg", &eval::AteResult::rotation_deg);
@@ -100,7 +101,8 @@ void bind_eval(py::module_& m) {
       py::arg("frames"), py::arg("reference"),
       "Poses without timestamps against reference poses of the same index, rigidly aligned");
   m.def(
-      "read_tum", [](const std::filesystem::path& path) { return trajectory_array(slam::read_tum_file(path)); },
+      "read_tum",
+      [](const std::filesystem::path& path) { return trajectory_array(slam::read_tum_file(path)); },
       py::arg("path"), "A TUM trajectory as an (n, 4) array of (t, x, y, theta)");
   m.def(
       "write_tum",

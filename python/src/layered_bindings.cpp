@@ -33,10 +33,9 @@ TableProblem::Term python_term(const py::object& term, PythonThread& python) {
       const py::object value = term(index_array(choice));
       const double v = py::float_(value).cast<double>();
       if (std::isfinite(v) && v >= 0.0) return v;
-      PyErr_SetString(PyExc_ValueError,
-                      ("term: returned " + std::string(py::repr(value)) +
-                       ", expected a finite number >= 0")
-                          .c_str());
+      PyErr_SetString(PyExc_ValueError, ("term: returned " + std::string(py::repr(value)) +
+                                         ", expected a finite number >= 0")
+                                            .c_str());
       throw py::error_already_set();
     } catch (py::error_already_set& e) {
       python.fail(std::move(e));

@@ -120,7 +120,8 @@ void bind_settings(py::module_& m) {
       .def_readwrite("trials", &mapping::MappingSettings::trials)
       .def_readwrite("threads", &mapping::MappingSettings::threads)
       .def_property(
-          "backend", [](const mapping::MappingSettings& s) { return std::string(aco::to_string(s.backend)); },
+          "backend",
+          [](const mapping::MappingSettings& s) { return std::string(aco::to_string(s.backend)); },
           [](mapping::MappingSettings& s, const std::string& name) {
             const auto kind = aco::parse_backend(name);
             if (!kind) unknown_name("backend", name, aco::backend_names());
@@ -141,23 +142,26 @@ void bind_result(py::module_& m) {
   py::class_<PipelineRun>(m, "PipelineResult", "mapping::PipelineResult")
       .def_property_readonly("fragment_set",
                              [](const PipelineRun& p) { return p.result.frontend.fragment_set; })
-      .def_property_readonly("scans", [](const PipelineRun& p) { return p.result.log.scans.size(); })
-      .def_property_readonly("trajectory",
-                             [](const PipelineRun& p) { return trajectory_array(p.result.mapping.corrected); },
-                             "Every scan's corrected pose, (n, 4) of (t, x, y, theta)")
+      .def_property_readonly("scans",
+                             [](const PipelineRun& p) { return p.result.log.scans.size(); })
+      .def_property_readonly(
+          "trajectory",
+          [](const PipelineRun& p) { return trajectory_array(p.result.mapping.corrected); },
+          "Every scan's corrected pose, (n, 4) of (t, x, y, theta)")
       .def_property_readonly(
           "scan_matcher_trajectory",
           [](const PipelineRun& p) { return trajectory_array(p.result.frontend.trajectory); })
       .def_property_readonly("trials", [](const PipelineRun& p) { return p.result.mapping.trials; })
-      .def_property_readonly("best_trial", [](const PipelineRun& p) { return p.result.mapping.best; })
+      .def_property_readonly("best_trial",
+                             [](const PipelineRun& p) { return p.result.mapping.best; })
       .def_property_readonly("scan_matcher_scores",
                              [](const PipelineRun& p) {
                                return py::make_tuple(p.result.mapping.scan_matcher.weight,
                                                      p.result.mapping.scan_matcher.chi2);
                              })
-      .def_property_readonly("closures",
-                             [](const PipelineRun& p) { return closures_list(p.result.mapping); },
-                             "Per closure: fragments and Mahalanobis distance before and after")
+      .def_property_readonly(
+          "closures", [](const PipelineRun& p) { return closures_list(p.result.mapping); },
+          "Per closure: fragments and Mahalanobis distance before and after")
       .def_property_readonly("evaluation",
                              [](const PipelineRun& p) -> py::object {
                                if (!p.result.evaluation) return py::none();
@@ -177,16 +181,17 @@ void bind_result(py::module_& m) {
                                d["total_s"] = t.total_s;
                                return d;
                              })
-      .def_property_readonly("maps",
-                             [](const PipelineRun& p) -> py::object {
-                               if (!p.result.maps) return py::none();
-                               py::dict d;
-                               d["scan_matcher"] = image_array(p.result.maps->scan_matcher);
-                               d["optimized"] = image_array(p.result.maps->optimized);
-                               d["average"] = image_array(p.result.maps->average);
-                               return d;
-                             },
-                             "The three maps as (height, width, 3) uint8 images, if drawn")
+      .def_property_readonly(
+          "maps",
+          [](const PipelineRun& p) -> py::object {
+            if (!p.result.maps) return py::none();
+            py::dict d;
+            d["scan_matcher"] = image_array(p.result.maps->scan_matcher);
+            d["optimized"] = image_array(p.result.maps->optimized);
+            d["average"] = image_array(p.result.maps->average);
+            return d;
+          },
+          "The three maps as (height, width, 3) uint8 images, if drawn")
       .def(
           "report",
           [](const PipelineRun& p) {

@@ -126,17 +126,18 @@ void bind_pose_graph(py::module_& m) {
             g.graph.vertices = std::move(v);
           },
           "Vertex poses (n, 3): the start of ceres and nlopt")
-      .def_property_readonly("edges",
-                             [](const NamedGraph& g) {
-                               py::array_t<std::uint64_t> out(
-                                   {static_cast<py::ssize_t>(g.graph.edges.size()), py::ssize_t{2}});
-                               auto v = out.mutable_unchecked<2>();
-                               for (std::size_t k = 0; k < g.graph.edges.size(); ++k) {
-                                 v(static_cast<py::ssize_t>(k), 0) = g.graph.edges[k].from;
-                                 v(static_cast<py::ssize_t>(k), 1) = g.graph.edges[k].to;
-                               }
-                               return out;
-                             })
+      .def_property_readonly(
+          "edges",
+          [](const NamedGraph& g) {
+            py::array_t<std::uint64_t> out(
+                {static_cast<py::ssize_t>(g.graph.edges.size()), py::ssize_t{2}});
+            auto v = out.mutable_unchecked<2>();
+            for (std::size_t k = 0; k < g.graph.edges.size(); ++k) {
+              v(static_cast<py::ssize_t>(k), 0) = g.graph.edges[k].from;
+              v(static_cast<py::ssize_t>(k), 1) = g.graph.edges[k].to;
+            }
+            return out;
+          })
       .def_property_readonly("measurements",
                              [](const NamedGraph& g) {
                                std::vector<slam::Pose2> z;
@@ -144,18 +145,18 @@ void bind_pose_graph(py::module_& m) {
                                  z.push_back(e.measurement);
                                return poses_array(z);
                              })
-      .def_property_readonly("information",
-                             [](const NamedGraph& g) {
-                               py::array_t<double> out({static_cast<py::ssize_t>(g.graph.edges.size()),
-                                                        py::ssize_t{3}, py::ssize_t{3}});
-                               auto v = out.mutable_unchecked<3>();
-                               for (std::size_t k = 0; k < g.graph.edges.size(); ++k)
-                                 for (int r = 0; r < 3; ++r)
-                                   for (int c = 0; c < 3; ++c)
-                                     v(static_cast<py::ssize_t>(k), r, c) =
-                                         g.graph.edges[k].information(r, c);
-                               return out;
-                             })
+      .def_property_readonly(
+          "information",
+          [](const NamedGraph& g) {
+            py::array_t<double> out(
+                {static_cast<py::ssize_t>(g.graph.edges.size()), py::ssize_t{3}, py::ssize_t{3}});
+            auto v = out.mutable_unchecked<3>();
+            for (std::size_t k = 0; k < g.graph.edges.size(); ++k)
+              for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                  v(static_cast<py::ssize_t>(k), r, c) = g.graph.edges[k].information(r, c);
+            return out;
+          })
       .def_property(
           "fixed", [](const NamedGraph& g) { return g.graph.fixed; },
           [](NamedGraph& g, std::vector<std::size_t> fixed) {
@@ -191,8 +192,8 @@ void bind_pose_graph(py::module_& m) {
           },
           py::arg("path"), "Writes g2o lines, or TORO lines for a .graph name (atomically)")
       .def("__repr__", [](const NamedGraph& g) {
-        return "<antslam.slam.PoseGraph '" + g.name + "': " +
-               std::to_string(g.graph.vertices.size()) + " vertices, " +
+        return "<antslam.slam.PoseGraph '" + g.name +
+               "': " + std::to_string(g.graph.vertices.size()) + " vertices, " +
                std::to_string(g.graph.edges.size()) + " edges>";
       });
 
@@ -210,15 +211,20 @@ void bind_pose_graph(py::module_& m) {
       py::arg("set"), py::arg("frames"),
       "The pose graph of a fragment set with the given world frames as vertices");
   m.def(
-      "chain", [](const DoubleArray& a) { return poses_array(slam::chain(poses_from(a, "alignments"))); },
+      "chain",
+      [](const DoubleArray& a) { return poses_array(slam::chain(poses_from(a, "alignments"))); },
       py::arg("alignments"), "World frames F_1..F_N of N - 1 alignments (eq. 8)");
   m.def(
       "relative_alignments",
-      [](const DoubleArray& f) { return poses_array(slam::relative_alignments(poses_from(f, "frames"))); },
+      [](const DoubleArray& f) {
+        return poses_array(slam::relative_alignments(poses_from(f, "frames")));
+      },
       py::arg("frames"), "X_i = F_{i-1}^-1 F_i of world frames (the inverse of chain)");
   m.def(
       "read_reference_poses",
-      [](const std::filesystem::path& path) { return poses_array(slam::read_reference_poses(path)); },
+      [](const std::filesystem::path& path) {
+        return poses_array(slam::read_reference_poses(path));
+      },
       py::arg("path"), "Reference poses: a pose graph's vertices, a TUM file or `x y theta` lines");
 }
 

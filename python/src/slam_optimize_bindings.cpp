@@ -52,9 +52,8 @@ slam::TrialSettings trial_settings(const slam::OptimizeSettings& s, std::size_t 
 }
 
 std::vector<slam::OptimizeResult> optimize_set(const slam::FragmentSet& set,
-                                               slam::OptimizeSettings settings,
-                                               std::size_t trials, std::size_t threads,
-                                               const py::object& convergence,
+                                               slam::OptimizeSettings settings, std::size_t trials,
+                                               std::size_t threads, const py::object& convergence,
                                                const py::object& finished) {
   const slam::TrialSettings t = trial_settings(settings, trials, threads);
   return run_interruptible([&](PythonThread& python) {
@@ -67,8 +66,7 @@ std::vector<slam::OptimizeResult> optimize_set(const slam::FragmentSet& set,
 std::vector<slam::OptimizeResult> optimize_graph(const NamedGraph& graph,
                                                  slam::OptimizeSettings settings,
                                                  std::size_t samples, std::size_t trials,
-                                                 std::size_t threads,
-                                                 const py::object& convergence,
+                                                 std::size_t threads, const py::object& convergence,
                                                  const py::object& finished) {
   const slam::TrialSettings t = trial_settings(settings, trials, threads);
   const slam::G2oImportSettings import{samples, settings.seed};  // as antslam optimize seeds them
@@ -84,7 +82,8 @@ void bind_settings(py::module_& m) {
   py::class_<slam::RefineSettings>(m, "RefineSettings", "NLopt refinement (slamgraph/refine.hpp)")
       .def(py::init<>())
       .def_property(
-          "algorithm", [](const slam::RefineSettings& s) { return std::string(slam::to_string(s.algorithm)); },
+          "algorithm",
+          [](const slam::RefineSettings& s) { return std::string(slam::to_string(s.algorithm)); },
           [](slam::RefineSettings& s, const std::string& name) {
             s.algorithm = slam::parse_refine_algorithm(name);
           })
@@ -103,13 +102,17 @@ void bind_settings(py::module_& m) {
   py::class_<slam::OptimizeSettings>(m, "OptimizeSettings", "slamgraph/optimize.hpp")
       .def(py::init<>())
       .def_property(
-          "method", [](const slam::OptimizeSettings& s) { return std::string(slam::to_string(s.method)); },
-          [](slam::OptimizeSettings& s, const std::string& name) { s.method = slam::parse_method(name); })
+          "method",
+          [](const slam::OptimizeSettings& s) { return std::string(slam::to_string(s.method)); },
+          [](slam::OptimizeSettings& s, const std::string& name) {
+            s.method = slam::parse_method(name);
+          })
       .def_readwrite("seed", &slam::OptimizeSettings::seed)
       .def_readwrite("iterations", &slam::OptimizeSettings::iterations)
       .def_readwrite("time_limit_s", &slam::OptimizeSettings::time_limit_s)
       .def_property(
-          "backend", [](const slam::OptimizeSettings& s) { return std::string(aco::to_string(s.backend)); },
+          "backend",
+          [](const slam::OptimizeSettings& s) { return std::string(aco::to_string(s.backend)); },
           [](slam::OptimizeSettings& s, const std::string& name) {
             const auto kind = aco::parse_backend(name);
             if (!kind) unknown_name("backend", name, aco::backend_names());
@@ -122,7 +125,9 @@ void bind_settings(py::module_& m) {
       .def_readwrite("max_exhaustive_paths", &slam::OptimizeSettings::max_exhaustive_paths)
       .def_property(
           "initial", [](const slam::OptimizeSettings& s) { return poses_array(s.initial); },
-          [](slam::OptimizeSettings& s, const DoubleArray& a) { s.initial = poses_from(a, "initial"); },
+          [](slam::OptimizeSettings& s, const DoubleArray& a) {
+            s.initial = poses_from(a, "initial");
+          },
           "Start of nlopt and ceres on a fragment set: N - 1 alignments; empty = the means");
   m.def("method_names", [] { return method_names(); });
 }
@@ -138,15 +143,19 @@ void bind_results(py::module_& m) {
                ", best_weight=" + std::to_string(p.best_weight) + ")";
       });
   py::class_<slam::OptimizeResult>(m, "Result", "One optimizer run (slamgraph/optimize.hpp)")
-      .def_property_readonly("method",
-                             [](const slam::OptimizeResult& r) { return std::string(slam::to_string(r.method)); })
-      .def_property_readonly("weight", [](const slam::OptimizeResult& r) { return r.scores.weight; })
+      .def_property_readonly(
+          "method",
+          [](const slam::OptimizeResult& r) { return std::string(slam::to_string(r.method)); })
+      .def_property_readonly("weight",
+                             [](const slam::OptimizeResult& r) { return r.scores.weight; })
       .def_property_readonly("chi2", [](const slam::OptimizeResult& r) { return r.scores.chi2; })
-      .def_property_readonly("choice", [](const slam::OptimizeResult& r) { return index_array(r.choice); })
-      .def_property_readonly("alignments",
-                             [](const slam::OptimizeResult& r) { return poses_array(r.alignments); })
-      .def_property_readonly("frames", [](const slam::OptimizeResult& r) { return poses_array(r.frames); },
-                             "World poses of the fragments (of the vertices of a pose graph)")
+      .def_property_readonly("choice",
+                             [](const slam::OptimizeResult& r) { return index_array(r.choice); })
+      .def_property_readonly(
+          "alignments", [](const slam::OptimizeResult& r) { return poses_array(r.alignments); })
+      .def_property_readonly(
+          "frames", [](const slam::OptimizeResult& r) { return poses_array(r.frames); },
+          "World poses of the fragments (of the vertices of a pose graph)")
       .def_readonly("iterations", &slam::OptimizeResult::iterations)
       .def_readonly("evaluations", &slam::OptimizeResult::evaluations)
       .def_readonly("elapsed_s", &slam::OptimizeResult::elapsed_s)
@@ -154,7 +163,8 @@ void bind_results(py::module_& m) {
       .def_property_readonly(
           "convergence",
           [](const slam::OptimizeResult& r) {
-            py::array_t<double> out({static_cast<py::ssize_t>(r.convergence.size()), py::ssize_t{4}});
+            py::array_t<double> out(
+                {static_cast<py::ssize_t>(r.convergence.size()), py::ssize_t{4}});
             auto v = out.mutable_unchecked<2>();
             for (std::size_t k = 0; k < r.convergence.size(); ++k) {
               const slam::ConvergencePoint& p = r.convergence[k];
@@ -168,9 +178,8 @@ void bind_results(py::module_& m) {
           },
           "Every improvement: (iteration, evaluations, elapsed_s, best_weight) rows")
       .def("__repr__", [](const slam::OptimizeResult& r) {
-        return "<antslam.slam.Result " + std::string(slam::to_string(r.method)) +
-               ": weight " + std::to_string(r.scores.weight) + ", chi2 " +
-               std::to_string(r.scores.chi2) + ">";
+        return "<antslam.slam.Result " + std::string(slam::to_string(r.method)) + ": weight " +
+               std::to_string(r.scores.weight) + ", chi2 " + std::to_string(r.scores.chi2) + ">";
       });
   py::class_<slam::Statistics>(m, "Statistics", "mean, sample standard deviation, min, max")
       .def_readonly("mean", &slam::Statistics::mean)

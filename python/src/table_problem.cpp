@@ -32,8 +32,8 @@ TableProblem::TableProblem(std::vector<std::vector<double>> unary,
   }
   if (!pairwise_.empty()) {
     if (pairwise_.size() + 1 != unary_.size())
-      throw std::invalid_argument("pairwise: " + std::to_string(pairwise_.size()) +
-                                  " tables for " + std::to_string(unary_.size()) +
+      throw std::invalid_argument("pairwise: " + std::to_string(pairwise_.size()) + " tables for " +
+                                  std::to_string(unary_.size()) +
                                   " layers (expected one per consecutive pair)");
     for (std::size_t l = 0; l < pairwise_.size(); ++l) {
       const std::string name = "pairwise[" + std::to_string(l) + "]";

@@ -56,20 +56,21 @@ void bind_tsp(py::module_& m) {
       .def_property_readonly("name", &tsp::Instance::name)
       .def_property_readonly("size", &tsp::Instance::size)
       .def("__len__", &tsp::Instance::size)
-      .def_property_readonly("edge_weight_type",
-                             [](const tsp::Instance& i) { return std::string(tsp::to_string(i.type())); })
+      .def_property_readonly(
+          "edge_weight_type",
+          [](const tsp::Instance& i) { return std::string(tsp::to_string(i.type())); })
       .def_readonly("comment", &tsp::Instance::comment)
-      .def_property_readonly("coords",
-                             [](const tsp::Instance& i) {
-                               py::array_t<double> out(
-                                   {static_cast<py::ssize_t>(i.coords().size()), py::ssize_t{2}});
-                               auto v = out.mutable_unchecked<2>();
-                               for (std::size_t k = 0; k < i.coords().size(); ++k) {
-                                 v(static_cast<py::ssize_t>(k), 0) = i.coords()[k].x;
-                                 v(static_cast<py::ssize_t>(k), 1) = i.coords()[k].y;
-                               }
-                               return out;
-                             })
+      .def_property_readonly(
+          "coords",
+          [](const tsp::Instance& i) {
+            py::array_t<double> out({static_cast<py::ssize_t>(i.coords().size()), py::ssize_t{2}});
+            auto v = out.mutable_unchecked<2>();
+            for (std::size_t k = 0; k < i.coords().size(); ++k) {
+              v(static_cast<py::ssize_t>(k), 0) = i.coords()[k].x;
+              v(static_cast<py::ssize_t>(k), 1) = i.coords()[k].y;
+            }
+            return out;
+          })
       .def(
           "distance",
           [](const tsp::Instance& i, std::uint32_t a, std::uint32_t b) {
@@ -109,12 +110,13 @@ void bind_tsp(py::module_& m) {
           },
           py::arg("path"), "Writes the instance as a TSPLIB file (atomically)")
       .def("__repr__", [](const tsp::Instance& i) {
-        return "<antslam.tsp.Instance " + i.name() + ", " + std::to_string(i.size()) +
-               " cities, " + std::string(tsp::to_string(i.type())) + ">";
+        return "<antslam.tsp.Instance " + i.name() + ", " + std::to_string(i.size()) + " cities, " +
+               std::string(tsp::to_string(i.type())) + ">";
       });
 
-  m.def("read", [](const std::filesystem::path& path) { return tsp::read_instance(path); },
-        py::arg("path"), "Reads a TSPLIB instance (.tsp)");
+  m.def(
+      "read", [](const std::filesystem::path& path) { return tsp::read_instance(path); },
+      py::arg("path"), "Reads a TSPLIB instance (.tsp)");
   m.def("generate", &tsp::random_uniform_instance, py::arg("cities"), py::arg("seed"),
         py::arg("side") = 1.0e6, "Random uniform EUC_2D instance (tsp/generator.hpp)");
   m.def("known_optimum", &tsp::known_optimum, py::arg("path"),
@@ -133,7 +135,9 @@ void bind_tsp(py::module_& m) {
       .def_readwrite("threads", &tsp::SolverSettings::threads)
       .def_property(
           "local_search",
-          [](const tsp::SolverSettings& s) { return std::string(tsp::to_string(s.local_search.kind)); },
+          [](const tsp::SolverSettings& s) {
+            return std::string(tsp::to_string(s.local_search.kind));
+          },
           [](tsp::SolverSettings& s, const std::string& name) {
             const auto kind = tsp::parse_local_search(name);
             if (!kind) unknown_name("local_search", name, "none, 2opt, 2.5opt, 3opt");
@@ -152,7 +156,8 @@ void bind_tsp(py::module_& m) {
             s.local_search.queue_changed_only = name == "changed";
           })
       .def_property(
-          "backend", [](const tsp::SolverSettings& s) { return std::string(aco::to_string(s.backend)); },
+          "backend",
+          [](const tsp::SolverSettings& s) { return std::string(aco::to_string(s.backend)); },
           [](tsp::SolverSettings& s, const std::string& name) {
             const auto kind = aco::parse_backend(name);
             if (!kind) unknown_name("backend", name, aco::backend_names());

@@ -40,6 +40,7 @@ def test_files_arrays_and_the_program_agree(program, tmp_path):
     expected = json.loads((tmp_path / "e.json").read_text())
     e = antslam.eval.evaluate(tmp_path / "e.tum", reference, relations=DATA / "laser" / "intel.relations")
     mine = json.loads(e.to_json())
+    del expected["relations"]["file"]  # the program names its input files; to_json() does not
     for key in ("ate", "rpe", "relations"):
         assert mine[key] == expected[key]
     assert e.relations.used > 50
@@ -49,7 +50,7 @@ def test_errors_are_one_line(tmp_path):
     a = square_walk()
     b = a.copy()
     b[:, 0] += 1000.0
-    with pytest.raises(ValueError, match=r"no pose"):
+    with pytest.raises(ValueError, match=r"^no estimated pose has a reference pose within max_dt = 0\.02 s "):
         antslam.eval.evaluate(a, b)
     with pytest.raises(ValueError, match=r"^estimate: expected an \(n, 4\) array of \(t, x, y, theta\)$"):
         antslam.eval.evaluate(a[:, :3], a)

@@ -71,3 +71,21 @@ def test_bad_graphs_are_one_line():
     g = antslam.slam.read_graph(GRAPHS / "square.graph")
     with pytest.raises(ValueError, match=r"^vertices: got 2 poses for 4 vertices$"):
         g.vertices = np.zeros((2, 3))
+
+
+def test_from_g2o_is_the_programs_fragment_set(program, tmp_path):
+    ring = DATA / "posegraphs" / "ring.g2o"
+    program("g2o", ring, "-o", tmp_path / "ring.json", "-m", 5, "--seed", 2)
+    expected = antslam.slam.load(tmp_path / "ring.json")
+    s = antslam.slam.from_g2o(ring, samples=5, seed=2)
+    assert len(s) == len(antslam.slam.read_graph(ring)) == len(expected)
+    assert s.closures == expected.closures and len(s.closures) > 0
+    np.testing.assert_array_equal(s.means, expected.means)
+    for fragment in (1, len(s) // 2, len(s) - 1):
+        assert s.samples(fragment).shape == (5, 3)
+        np.testing.assert_array_equal(s.samples(fragment), expected.samples(fragment))
+    # The same from a graph already read, and a different seed draws different samples.
+    again = antslam.slam.from_g2o(antslam.slam.read_graph(ring), samples=5, seed=2)
+    np.testing.assert_array_equal(again.samples(1), s.samples(1))
+    assert not np.array_equal(antslam.slam.from_g2o(ring, samples=5, seed=3).samples(1),
+                              s.samples(1))

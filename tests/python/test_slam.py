@@ -38,7 +38,9 @@ def test_every_method_returns_a_result_consistent_with_the_set(small, method):
     np.testing.assert_allclose(r.frames, antslam.slam.chain(r.alignments), atol=1e-12)
     assert (r.weight, r.chi2) == small.score(r.alignments)
     optimum = antslam.slam.optimize(small, method="exhaustive").weight
-    if len(r.choice):
+    if method == "hybrid+nlopt":  # the ants' choice is the start of the refinement
+        assert r.weight <= small.path_weight(r.choice) + 1e-12
+    elif len(r.choice):
         assert r.weight == pytest.approx(small.path_weight(r.choice), abs=1e-12)
         assert r.weight >= optimum - 1e-12
     assert r.convergence.shape[1] == 4 and r.convergence[-1, 3] >= r.weight - 1e-12
