@@ -45,7 +45,8 @@ class Result(Run):
 
 # Options beyond the engine's parameters, and the settings attribute each one sets.
 _SOLVER = {"local_search": "local_search", "ls_start": "ls_start", "backend": "backend",
-           "threads": "threads", "hybrid_deposit": "hybrid_deposit"}
+           "threads": "threads", "hybrid_deposit": "hybrid_deposit",
+           "focused_edges": "focused_edges"}
 _PROBLEM = {"candidates": "candidates", "matrix_limit": "matrix_limit"}
 
 
@@ -61,7 +62,8 @@ def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3op
     global_best, improved, best). Further options, as the antslam tsp options of the same name:
     ants, alpha, beta, rho, q0, xi, elite_weight, rank_width, p_best, restarts, p0,
     glob_best_freq, tau_max, tau_init, hybrid_deposit, ls_ants, ls_start, candidates,
-    matrix_limit, backend (auto, serial, omp, tbb), threads. Zero means the variant's default
+    matrix_limit, backend (auto, serial, omp, tbb), threads, focused_edges (new edges per
+    focused ant, Skinderowicz 2022; 0: every tour built from nothing). Zero means the variant's default
     where the program says so. The same options and seed give the program's tour."""
     settings = _core.tsp.SolverSettings()
     problem = _core.tsp.ProblemSettings()

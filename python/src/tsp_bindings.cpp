@@ -131,6 +131,7 @@ void bind_tsp(py::module_& m) {
   py::class_<tsp::SolverSettings>(m, "SolverSettings")
       .def(py::init<>())
       .def_readwrite("aco", &tsp::SolverSettings::aco)
+      .def_readwrite("focused_edges", &tsp::SolverSettings::focused_edges)
       .def_readwrite("hybrid_deposit", &tsp::SolverSettings::hybrid_deposit)
       .def_readwrite("threads", &tsp::SolverSettings::threads)
       .def_property(

@@ -55,6 +55,17 @@ def test_same_seed_same_tour_as_the_program(program, tmp_path):
     assert f"best length  {result.length:g}" in out
 
 
+def test_focused_construction_as_the_program(program, tmp_path):
+    path = DATA / "tsplib" / "eil51.tsp"
+    program("tsp", "--instance", path, "--variant", "mmas", "--iterations", 30, "--seed", 2,
+            "--focused-edges", 8, "--tour-out", tmp_path / "f.tour")
+    instance = antslam.tsp.read(path)
+    focused = antslam.tsp.solve(instance, iterations=30, seed=2, focused_edges=8)
+    assert np.array_equal(instance.read_tour(tmp_path / "f.tour"), focused.tour)
+    plain = antslam.tsp.solve(instance, iterations=30, seed=2)
+    assert not np.array_equal(plain.tour, focused.tour)  # the option reaches the engine
+
+
 def test_the_observer_hears_every_iteration():
     instance = antslam.tsp.read(FIXTURES / "burma14.tsp")
     reports = []
