@@ -30,8 +30,7 @@ void bind_engine(py::module_& m) {
               std::string names;
               for (const std::string& n : aco::variant_names())
                 names += (names.empty() ? "" : ", ") + n;
-              throw std::invalid_argument("variant: unknown '" + name + "' (expected one of " +
-                                          names + ")");
+              unknown_name("variant", name, names);
             }
             p.variant = *v;
           })
