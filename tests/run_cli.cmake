@@ -1,12 +1,17 @@
 # Runs `antslam` with ARGS ('|'-separated) and checks the outcome:
 #   EXPECT=error : non-zero exit and stderr matching STDERR_REGEX; with ONE_LINE, stderr is
-#                  exactly one line "antslam: error: ..."
+#                  exactly one line "antslam: error: ..."; with ABSENT=a,b,..., none of those
+#                  files exists afterwards (they are removed first: nothing was written)
 #   EXPECT=ok    : exit 0, stdout matching STDOUT_REGEX (and not STDOUT_NOT_REGEX, if set), and
 #                  if FILE is set, FILE matching FILE_REGEX; with SAME=a,b[,c,d...], file a byte-identical to b (c to d, ...)
 string(REPLACE "|" ";" args "${ARGS}")
 if(FILE)
   file(REMOVE "${FILE}")
 endif()
+string(REPLACE "," ";" absent "${ABSENT}")
+foreach(path IN LISTS absent)
+  file(REMOVE "${path}")
+endforeach()
 execute_process(COMMAND "${ANTSLAM}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out
                 ERROR_VARIABLE err)
 if(EXPECT STREQUAL "error")
@@ -19,6 +24,11 @@ if(EXPECT STREQUAL "error")
   if(ONE_LINE AND NOT err MATCHES "^antslam: error: [^\n]+\n$")
     message(FATAL_ERROR "stderr is not one line 'antslam: error: ...':\n${err}")
   endif()
+  foreach(path IN LISTS absent)
+    if(EXISTS "${path}")
+      message(FATAL_ERROR "${path} was written despite the error")
+    endif()
+  endforeach()
 else()
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "expected exit 0, got ${rc}; stderr:\n${err}")

@@ -1,8 +1,10 @@
 #include "eval/ate.hpp"
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "eval/alignment.hpp"
 #include "eval/relative_error.hpp"
 
 namespace antslam::eval {
@@ -18,6 +20,17 @@ AteResult ate(std::span<const PosePair> pairs, const slam::Pose2& alignment) {
     rotation.push_back(degrees(std::abs(error.theta)));
   }
   return {alignment, summarize(translation), summarize(rotation)};
+}
+
+AteResult indexed_ate(std::span<const slam::Pose2> estimate,
+                      std::span<const slam::Pose2> reference) {
+  if (estimate.size() != reference.size())
+    throw std::invalid_argument("ATE: " + std::to_string(estimate.size()) + " poses against " +
+                                std::to_string(reference.size()) + " reference poses");
+  std::vector<PosePair> pairs;
+  for (std::size_t i = 0; i < estimate.size(); ++i)
+    pairs.push_back({i, i, static_cast<double>(i), estimate[i], reference[i]});
+  return ate(pairs, align(pairs));
 }
 
 }  // namespace antslam::eval

@@ -48,14 +48,8 @@ Evaluation evaluate(const slam::Trajectory& estimate, const slam::Trajectory& re
 
 slam::TrajectoryError frames_error(std::span<const slam::Pose2> frames,
                                    std::span<const slam::Pose2> reference) {
-  if (frames.size() != reference.size())
-    throw std::invalid_argument("frames_error: " + std::to_string(frames.size()) + " poses, " +
-                                std::to_string(reference.size()) + " reference poses");
-  std::vector<PosePair> pairs;
-  for (std::size_t i = 0; i < frames.size(); ++i)
-    pairs.push_back({i, i, static_cast<double>(i), frames[i], reference[i]});
-  const AteResult e = ate(pairs, align(pairs));
-  return {e.translation_m.rmse, e.translation_m.max, e.rotation_deg.rmse, pairs.size()};
+  const AteResult e = indexed_ate(frames, reference);
+  return {e.translation_m.rmse, e.translation_m.max, e.rotation_deg.rmse, frames.size()};
 }
 
 }  // namespace antslam::eval

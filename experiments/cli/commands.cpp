@@ -25,6 +25,8 @@ void add_commands(CLI::App& app) {
   add_simulate_odometry_command(app);
   add_tinyslam_command(app);
   add_fragment_set_command(app);
+  add_outliers_command(app);
+  add_robust_command(app);
 }
 
 }  // namespace antslam::cli

@@ -22,5 +22,7 @@ void add_odometry_command(CLI::App& app);
 void add_simulate_odometry_command(CLI::App& app);
 void add_tinyslam_command(CLI::App& app);
 void add_fragment_set_command(CLI::App& app);
+void add_outliers_command(CLI::App& app);
+void add_robust_command(CLI::App& app);
 
 }  // namespace antslam::cli

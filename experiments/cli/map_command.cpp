@@ -62,9 +62,10 @@ void print_summary(const MapOptions& o, const mapping::PipelineResult& r) {
     const auto trusted = static_cast<std::size_t>(
         std::count(mr.closing->trusted.begin(), mr.closing->trusted.end(), true));
     std::printf(
-        "loops closed by least squares with %zu of %zu closures (%s%s): weight %.4f, "
+        "loops closed by least squares with %zu of %zu closures (%s; %s%s): weight %.4f, "
         "chi2 %.6g\n",
         trusted, set.closures.size(),
+        std::string(mapping::to_string(o.mapping.closing.selection)).c_str(),
         distrusted.empty() ? "all consistent" : "distrusted:", distrusted.c_str(), mr.scores.weight,
         mr.scores.chi2);
   }
@@ -169,6 +170,20 @@ void add_map_command(CLI::App& app) {
   sub->add_option("--reference", o.reference,
                   "reference trajectory (TUM) to evaluate both trajectories against");
   sub->add_flag("--no-maps", o.no_maps, "do not draw the maps");
+  std::vector<std::string> selections;
+  std::string help = "which closures the loops are closed with:";
+  for (const mapping::ClosureSelectionInfo& info : mapping::kClosureSelections) {
+    selections.emplace_back(info.name);
+    help += " " + std::string(info.name) + " (" + std::string(info.summary) + ")";
+  }
+  sub->add_option_function<std::string>(
+         "--closures",
+         [&o](const std::string& name) {
+           o.mapping.closing.selection = *mapping::parse_closure_selection(name);
+         },
+         help)
+      ->check(CLI::IsMember(selections))
+      ->default_str(std::string(mapping::to_string(o.mapping.closing.selection)));
   sub->add_flag(
       "--no-closing", [&o](std::int64_t) { o.mapping.closing.enabled = false; },
       "keep the best trial's map: do not close the loops with the trusted closures by least "

@@ -133,6 +133,10 @@ void run(const TspCommand& c) {
     require_memory("--matrix-limit " + std::to_string(c.algorithm.problem.matrix_limit) +
                        " (the distance matrix)",
                    4.0 * n * n);
+  const std::size_t ants = tsp::resolved_ants(read.size(), settings);
+  require_memory("--ants " + std::to_string(ants) + " on " + std::to_string(read.size()) +
+                     " cities (each ant's tour)",
+                 tsp::colony_memory_bytes(read.size(), ants));
   const tsp::TspProblem problem(std::move(read), problem_settings(c.algorithm));
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_start).count();

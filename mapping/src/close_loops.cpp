@@ -1,10 +1,60 @@
 #include "mapping/close_loops.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace antslam::mapping {
+
+std::string_view to_string(ClosureSelection selection) {
+  for (const ClosureSelectionInfo& info : kClosureSelections)
+    if (info.value == selection) return info.name;
+  return "?";
+}
+
+std::optional<ClosureSelection> parse_closure_selection(std::string_view name) {
+  for (const ClosureSelectionInfo& info : kClosureSelections)
+    if (info.name == name) return info.value;
+  return std::nullopt;
+}
+
+namespace {
+
+/// Least squares over the alignments and the trusted closures (the alignments' means' chain if
+/// none is trusted).
+std::vector<slam::Pose2> solve_trusted(const slam::FragmentSet& set,
+                                       std::span<const slam::Pose2> initial,
+                                       const std::vector<bool>& trusted,
+                                       const ClosingSettings& settings, Closing& out) {
+  slam::FragmentSet subset = set;
+  subset.closures.clear();
+  for (std::size_t c = 0; c < set.closures.size(); ++c)
+    if (trusted[c]) subset.closures.push_back(set.closures[c]);
+  if (subset.closures.empty()) return slam::chain(slam::mean_alignments(set));
+  ++out.solves;
+  return slam::optimize_with_ceres(subset, initial, false, settings.ceres).frames;
+}
+
+/// PCM: the trusted closures are a maximum clique of the pairwise consistency graph.
+Closing close_consistent(const slam::FragmentSet& set, std::span<const slam::Pose2> initial,
+                         const ClosingSettings& settings) {
+  const slam::RobustSettings& pcm = settings.pcm;
+  const slam::ConsistencyGraph consistency =
+      slam::pairwise_consistency(set, {pcm.inlier_confidence, pcm.backend, pcm.threads});
+  const slam::RobustMethod method = settings.selection == ClosureSelection::pcm_exact
+                                        ? slam::RobustMethod::pcm_exact
+                                        : slam::RobustMethod::pcm_aco;
+  Closing out;
+  out.clique = slam::maximum_consistent_set(consistency, method, pcm);
+  out.trusted.assign(set.closures.size(), false);
+  for (const std::uint32_t c : out.clique->clique.vertices) out.trusted[c] = true;
+  out.frames = solve_trusted(set, initial, out.trusted, settings, out);
+  return out;
+}
+
+}  // namespace
 
 void validate(const ClosingSettings& s) {
   if (!(s.outlier_chi2 > 0.0) || !std::isfinite(s.outlier_chi2))
@@ -19,20 +69,13 @@ Closing close_loops(const slam::FragmentSet& set, std::span<const slam::Pose2> s
   if (start.size() != set.fragments.size())
     throw std::invalid_argument("closing: got " + std::to_string(start.size()) +
                                 " frames, expected " + std::to_string(set.fragments.size()));
+  const std::vector<slam::Pose2> initial = slam::relative_alignments(start);
+  if (settings.selection != ClosureSelection::iterative_chi2)
+    return close_consistent(set, initial, settings);
   Closing out;
   out.trusted.assign(set.closures.size(), true);
-  const std::vector<slam::Pose2> initial = slam::relative_alignments(start);
-  slam::FragmentSet subset = set;
   for (;;) {
-    subset.closures.clear();
-    for (std::size_t c = 0; c < set.closures.size(); ++c)
-      if (out.trusted[c]) subset.closures.push_back(set.closures[c]);
-    if (subset.closures.empty()) {  // nothing to close: the alignments' means
-      out.frames = slam::chain(slam::mean_alignments(set));
-      return out;
-    }
-    out.frames = slam::optimize_with_ceres(subset, initial, false, settings.ceres).frames;
-    ++out.solves;
+    out.frames = solve_trusted(set, initial, out.trusted, settings, out);
     // The trusted closure that agrees worst with the joint solution.
     double worst = 0.0;
     std::size_t worst_index = 0;
@@ -46,7 +89,7 @@ Closing close_loops(const slam::FragmentSet& set, std::span<const slam::Pose2> s
         worst_index = c;
       }
     }
-    if (worst <= settings.outlier_chi2) return out;
+    if (worst <= settings.outlier_chi2) return out;  // also when none is trusted (worst = 0)
     out.trusted[worst_index] = false;
   }
 }

@@ -68,6 +68,12 @@ json optimization_json(const slam::FragmentSet& set, const MappingSettings& sett
     for (std::size_t c = 0; c < set.closures.size(); ++c)
       if (!r.closing->trusted[c])
         distrusted.push_back({{"from", set.closures[c].from}, {"to", set.closures[c].to}});
+    closing["selection"] = to_string(settings.closing.selection);
+    if (r.closing->clique)
+      closing["clique"] = {{"size", r.closing->clique->clique.vertices.size()},
+                           {"upper_bound", r.closing->clique->clique.upper_bound},
+                           {"optimal", r.closing->clique->clique.optimal},
+                           {"consistent_pairs", r.closing->clique->consistent_pairs}};
     closing["solves"] = r.closing->solves;
     closing["distrusted"] = distrusted;
   }

@@ -52,13 +52,22 @@ FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSetting
   FragmentSet set;
   set.name = source;
   set.fragments.resize(n);
+  const auto oriented_from = [&source](const PoseGraphEdge& e, std::size_t a) {
+    try {
+      return oriented(e, a);
+    } catch (const std::invalid_argument& problem) {
+      throw std::invalid_argument(source + ": EDGE_SE2 " + std::to_string(e.from) + " " +
+                                  std::to_string(e.to) + ": as a Gaussian from vertex " +
+                                  std::to_string(a) + ", " + problem.what());
+    }
+  };
   for (const PoseGraphEdge& e : graph.edges) {
     const std::size_t a = std::min(e.from, e.to), b = std::max(e.from, e.to);
     Fragment& f = set.fragments[b];
     if (b == a + 1 && !f.alignment) {
-      f.alignment = oriented(e, a);
+      f.alignment = oriented_from(e, a);
     } else {
-      set.closures.push_back({a, b, Pose2{}, oriented(e, a)});
+      set.closures.push_back({a, b, Pose2{}, oriented_from(e, a)});
     }
   }
   aco::Rng rng(aco::mix_seed(settings.seed, 0x6207));
@@ -77,6 +86,11 @@ FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSetting
   }
   if (set.closures.empty())
     throw std::invalid_argument(source + ": the pose graph has no loop-closure edge");
+  try {
+    validate(set);  // e.g. an edge's measurement beyond kMaxCoordinate, now a fragment's exit
+  } catch (const std::invalid_argument& problem) {
+    throw std::invalid_argument(source + ": " + problem.what());
+  }
   return set;
 }
 

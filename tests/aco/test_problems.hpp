@@ -1,6 +1,7 @@
 #pragma once
-// Small problems for the engine's tests: a random Euclidean TSP (TSPLIB EUC_2D rounding) and
-// exhaustive search for layered problems.
+// Small problems for the engine's tests: a random Euclidean TSP (TSPLIB EUC_2D rounding),
+// exhaustive search for layered problems, and a subset problem (maximum-value independent set
+// of a random conflict graph) with its optimum by enumeration.
 
 #include <algorithm>
 #include <cmath>
@@ -84,5 +85,71 @@ Solution exhaustive_optimum(const P& problem) {
     if (l == layers) return best;
   }
 }
+
+/// Maximum-value independent set as a subset problem: n elements with values in [1, 2), random
+/// conflicts with probability p; compatible = not in conflict; cost = 1 + value left out.
+class ConflictSubsetProblem {
+ public:
+  ConflictSubsetProblem(std::size_t n, double p, std::uint64_t seed) : n_(n), conflict_(n * n) {
+    Rng rng(mix_seed(seed, 0x5B5E7));
+    for (std::size_t i = 0; i < n; ++i) {
+      value_.push_back(1.0 + rng.uniform());
+      total_ += value_.back();
+      for (std::size_t j = 0; j < i; ++j)
+        conflict_[i * n + j] = conflict_[j * n + i] = rng.uniform() < p ? 1 : 0;
+    }
+  }
+
+  std::size_t element_count() const { return n_; }
+  bool compatible(std::uint32_t i, std::uint32_t j) const {
+    return conflict_[std::size_t{i} * n_ + j] == 0;
+  }
+  double cost(std::span<const std::uint32_t> set) const {
+    double chosen = 0.0;
+    for (std::uint32_t e : set) chosen += value_[e];
+    return 1.0 + total_ - chosen;
+  }
+
+  /// Whether `set` has distinct elements, no conflict, and no element that could be added.
+  bool maximal_independent(std::span<const std::uint32_t> set) const {
+    std::vector<bool> in(n_, false);
+    for (std::uint32_t e : set) {
+      if (e >= n_ || in[e]) return false;
+      in[e] = true;
+    }
+    for (std::uint32_t e = 0; e < n_; ++e) {
+      bool addable = !in[e];
+      for (std::uint32_t f : set) {
+        if (f != e && !compatible(e, f) && in[e]) return false;
+        addable = addable && compatible(e, f);
+      }
+      if (addable) return false;
+    }
+    return true;
+  }
+
+  /// The least cost over all independent sets (n <= 20).
+  double optimum() const {
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<std::uint32_t> set;
+    for (std::uint32_t mask = 0; mask < (1U << n_); ++mask) {
+      set.clear();
+      bool independent = true;
+      for (std::uint32_t e = 0; e < n_ && independent; ++e) {
+        if (((mask >> e) & 1U) == 0) continue;
+        for (std::uint32_t f : set) independent = independent && compatible(e, f);
+        set.push_back(e);
+      }
+      if (independent) best = std::min(best, cost(set));
+    }
+    return best;
+  }
+
+ private:
+  std::size_t n_;
+  std::vector<double> value_;
+  std::vector<std::uint8_t> conflict_;
+  double total_ = 0.0;
+};
 
 }  // namespace antslam::aco::testing

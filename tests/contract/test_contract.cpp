@@ -1,7 +1,7 @@
 // The colony contract (colony_contract.hpp) on every real problem the project ships: the
 // synthetic layered problem of the engine, the TSP without and with each local search, with
-// both constructions (from nothing and focused), and the AntSLAM problem of eq. (10) on the
-// paper's N = 9 set.
+// both constructions (from nothing and focused), the AntSLAM problem of eq. (10) on the paper's
+// N = 9 set, and maximum weighted clique (the subset family) on a random graph.
 
 #include <algorithm>
 #include <cstdint>
@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "aco/synthetic_layered.hpp"
+#include "clique/local_search.hpp"
+#include "clique/problem.hpp"
 #include "colony_contract.hpp"
 #include "slamgraph/slam_problem.hpp"
 #include "slamgraph/synth.hpp"
@@ -85,6 +87,42 @@ struct Slam {
   }
 };
 
+/// Maximum weighted clique on G(60, 0.5) with weights 1..4, without or with the (1,2)-swap
+/// local search: a set is feasible when it is a maximal clique (the construction stops only
+/// when no candidate is left, and the swaps keep it maximal).
+template <bool kSwaps>
+struct Clique {
+  static constexpr std::size_t kIterations = 30;
+  static const clique::Graph& graph() {
+    static const clique::Graph g = [] {
+      aco::Rng rng(aco::mix_seed(2018, 0xC1));
+      std::vector<clique::Edge> edges;
+      for (std::uint32_t i = 0; i < 60; ++i)
+        for (std::uint32_t j = i + 1; j < 60; ++j)
+          if (rng.uniform() < 0.5) edges.emplace_back(i, j);
+      std::vector<double> weights;
+      for (int v = 0; v < 60; ++v) weights.push_back(1.0 + rng.below(4));
+      return clique::Graph(60, edges, weights);
+    }();
+    return g;
+  }
+  static const clique::CliqueProblem& shared() {
+    static const clique::CliqueProblem p(graph());
+    return p;
+  }
+  const clique::CliqueProblem& problem() const { return shared(); }
+  auto local_search() const {
+    if constexpr (kSwaps) {
+      return clique::SwapLocalSearch{};
+    } else {
+      return aco::NoLocalSearch{};
+    }
+  }
+  bool feasible(std::span<const std::uint32_t> set) const {
+    return clique::is_maximal_clique(graph(), set);
+  }
+};
+
 using TspNoLocalSearch = Tsp<tsp::LocalSearchKind::none>;
 using TspTwoOpt = Tsp<tsp::LocalSearchKind::two_opt>;
 using TspTwoHalfOpt = Tsp<tsp::LocalSearchKind::two_half_opt>;
@@ -100,6 +138,11 @@ ANTSLAM_COLONY_CONTRACT(TspThreeOpt, TspThreeOpt);
 ANTSLAM_COLONY_CONTRACT(TspFocusedNoLocalSearch, TspFocusedNoLocalSearch);
 ANTSLAM_COLONY_CONTRACT(TspFocusedThreeOpt, TspFocusedThreeOpt);
 ANTSLAM_COLONY_CONTRACT(Slam, Slam);
+using CliqueNoLocalSearch = Clique<false>;
+using CliqueSwaps = Clique<true>;
+
+ANTSLAM_COLONY_CONTRACT(CliqueNoLocalSearch, CliqueNoLocalSearch);
+ANTSLAM_COLONY_CONTRACT(CliqueSwaps, CliqueSwaps);
 
 }  // namespace
 }  // namespace antslam

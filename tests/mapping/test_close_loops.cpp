@@ -1,15 +1,22 @@
 // Closing the loops with the trusted closures (mapping/close_loops.hpp): with consistent
 // closures it is least squares on the whole set (Ceres'), a false closure is distrusted and the
-// map follows the true ones, and a true closure far from a drifted map is trusted and closed.
+// map follows the true ones (by every selection: iterative rejection and PCM, exact and by the
+// ants), and a true closure far from a drifted map is trusted and closed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <ostream>
+#include <string>
 #include <vector>
 
 #include "mapping/close_loops.hpp"
 #include "slamgraph/synth.hpp"
 
 namespace antslam::mapping {
+
+void PrintTo(const ClosureSelectionInfo& info, std::ostream* os) { *os << info.name; }
+
 namespace {
 
 /// Two laps of the paper's rectangle, 24 fragments: several true revisit closures.
@@ -40,10 +47,10 @@ TEST(CloseLoops, ConsistentClosuresAreAllTrustedAndSolvedByLeastSquares) {
   }
 }
 
-TEST(CloseLoops, AFalseClosureIsDistrustedAndTheMapFollowsTheTrueOnes) {
+/// The two laps with a false closure appended: fragment 20 said to be 4 m off where fragment 8
+/// sees it, confidently.
+slam::FragmentSet two_laps_with_a_false_closure() {
   slam::FragmentSet set = two_laps();
-  const std::size_t true_closures = set.closures.size();
-  // A false closure: fragment 20 said to be 4 m off where fragment 8 sees it, confidently.
   slam::LoopClosure wrong = set.closures.front();
   wrong.from = 8;
   wrong.to = 20;
@@ -51,14 +58,58 @@ TEST(CloseLoops, AFalseClosureIsDistrustedAndTheMapFollowsTheTrueOnes) {
   wrong.hypothesis = slam::Gaussian2(truth * slam::Pose2{4.0, 0.0, 0.0},
                                      Eigen::Vector3d(0.0025, 0.0025, 1e-4).asDiagonal());
   set.closures.push_back(wrong);
-  const Closing c = close_loops(set, slam::chain(slam::mean_alignments(set)));
+  return set;
+}
+
+class EverySelection : public ::testing::TestWithParam<ClosureSelectionInfo> {};
+
+TEST_P(EverySelection, DropsTheFalseClosureKeepsTheTrueOnesAndSolvesOverThem) {
+  const slam::FragmentSet set = two_laps_with_a_false_closure();
+  const std::size_t true_closures = set.closures.size() - 1;
+  ClosingSettings settings;
+  settings.selection = GetParam().value;
+  const Closing c = close_loops(set, slam::chain(slam::mean_alignments(set)), settings);
+  ASSERT_EQ(c.trusted.size(), set.closures.size());
   EXPECT_FALSE(c.trusted.back());
   for (std::size_t k = 0; k < true_closures; ++k) EXPECT_TRUE(c.trusted[k]) << k;
-  EXPECT_EQ(c.solves, 2U);
+  // The map is least squares over the true closures alone.
+  slam::FragmentSet truthful = set;
+  truthful.closures.pop_back();
+  const slam::CeresResult ceres =
+      slam::optimize_with_ceres(truthful, slam::mean_alignments(set), false, {});
+  ASSERT_EQ(c.frames.size(), ceres.frames.size());
+  for (std::size_t i = 0; i < c.frames.size(); ++i) {
+    EXPECT_NEAR(c.frames[i].x, ceres.frames[i].x, 1e-5) << i;
+    EXPECT_NEAR(c.frames[i].y, ceres.frames[i].y, 1e-5) << i;
+    EXPECT_NEAR(c.frames[i].theta, ceres.frames[i].theta, 1e-7) << i;
+  }
   // The true closures hold, the false one does not.
   for (std::size_t k = 0; k < true_closures; ++k)
     EXPECT_LT(mahalanobis(set.closures[k], c.frames), 3.4);
   EXPECT_GT(mahalanobis(set.closures.back(), c.frames), 20.0);
+  // PCM solves once, over the clique; the rejection solves again after distrusting.
+  const bool pcm = GetParam().value != ClosureSelection::iterative_chi2;
+  EXPECT_EQ(c.solves, pcm ? 1U : 2U);
+  ASSERT_EQ(c.clique.has_value(), pcm);
+  if (pcm) {
+    EXPECT_EQ(c.clique->clique.vertices.size(), true_closures);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CloseLoops, EverySelection, ::testing::ValuesIn(kClosureSelections),
+                         [](const auto& test) {
+                           std::string name(test.param.name);
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(CloseLoops, SelectionNamesRoundTrip) {
+  for (const ClosureSelectionInfo& info : kClosureSelections) {
+    EXPECT_EQ(to_string(info.value), info.name);
+    EXPECT_EQ(parse_closure_selection(info.name), info.value);
+  }
+  EXPECT_FALSE(parse_closure_selection("pcm").has_value());
+  EXPECT_EQ(ClosingSettings{}.selection, ClosureSelection::iterative_chi2);  // the default
 }
 
 TEST(CloseLoops, ATrueClosureFarFromADriftedMapIsTrustedAndClosed) {

@@ -160,6 +160,38 @@ TEST(G2o, ImportNeedsAChainAndAClosure) {
   EXPECT_THROW(fragment_set_from_g2o(open, {}, "open.g2o"), std::invalid_argument);
 }
 
+// Found by fuzzing (docs/fuzzing.md): a backward edge whose measurement is far out makes the
+// first-order covariance of its inverse numerically indefinite; the import names the edge.
+TEST(G2o, ImportNamesTheEdgeWhoseInverseHasNoCovariance) {
+  const PoseGraph far = parse(
+      "VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nVERTEX_SE2 2 1 1 1.5708\nFIX 0\n"
+      "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE_SE2 1 2 0 1 1.5708 1 0 0 1 0 1\n"
+      "EDGE_SE2 2 0 -14294967296 1 -1.5708 1 0 0 1 0 1\n");
+  try {
+    fragment_set_from_g2o(far, {}, "far.g2o");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "far.g2o: EDGE_SE2 2 0: as a Gaussian from vertex 0, covariance is not positive "
+                 "definite");
+  }
+}
+
+// Found by fuzzing: an edge 4.3e9 m long makes a fragment's exit beyond the coordinate limit;
+// the import refuses the set naming the file, not with validate()'s bare message.
+TEST(G2o, ImportNamesTheFileOfAnInvalidSet) {
+  const PoseGraph far = parse(
+      "VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\nVERTEX_SE2 2 1 1 1.5708\nFIX 0\n"
+      "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE_SE2 1 2 04294967296 1 1.5708 1 0 0 1 0 1\n"
+      "EDGE_SE2 2 0 -1 1 -1.5708 1 0 0 1 0 1\n");
+  try {
+    fragment_set_from_g2o(far, {}, "far.g2o");
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "far.g2o: fragments[1].exit is not finite or beyond 1e9");
+  }
+}
+
 // The standard graphs of data/posegraphs load; the large one becomes a 1727-layer problem.
 TEST(G2o, LoadsTheBundledPoseGraphs) {
   const PoseGraph ring = read_g2o_file(ANTSLAM_DATA_DIR "/posegraphs/ring.g2o");

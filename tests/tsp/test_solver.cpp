@@ -135,6 +135,17 @@ TEST(Solver, MmasRestartsWithLocalSearch) {
   EXPECT_GT(colony.update().restarts(), 0U);
 }
 
+// Without local search the colony has one ant per city, each with a tour and visited marks of
+// 5 bytes a city: a million cities would need 5 TB, refused up front by `antslam tsp`.
+TEST(Solver, ColonyMemoryGrowsWithAntsTimesCities) {
+  SolverSettings s;
+  s.local_search.kind = LocalSearchKind::none;
+  EXPECT_EQ(resolved_ants(std::size_t{1000000}, s), 1000000U);
+  EXPECT_DOUBLE_EQ(colony_memory_bytes(1000000, resolved_ants(std::size_t{1000000}, s)), 5e12);
+  s.local_search.kind = LocalSearchKind::three_opt;
+  EXPECT_DOUBLE_EQ(colony_memory_bytes(1000000, resolved_ants(std::size_t{1000000}, s)), 5e6 * 25);
+}
+
 TEST(Solver, ResolvesTheTspDefaults) {
   const TspProblem& problem = instance_problem("eil51");
   SolverSettings s;

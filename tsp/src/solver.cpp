@@ -27,8 +27,17 @@ aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSetti
 }
 
 std::size_t resolved_ants(const TspProblem& problem, const SolverSettings& settings) {
+  return resolved_ants(problem.size(), settings);
+}
+
+std::size_t resolved_ants(std::size_t cities, const SolverSettings& settings) {
   if (settings.aco.ants > 0) return settings.aco.ants;
-  return aco::default_ants(settings.aco.variant, problem.size(), true, has_local_search(settings));
+  return aco::default_ants(settings.aco.variant, cities, true, has_local_search(settings));
+}
+
+double colony_memory_bytes(std::size_t cities, std::size_t ants) {
+  return (sizeof(std::uint32_t) + sizeof(std::uint8_t)) * static_cast<double>(cities) *
+         static_cast<double>(ants);
 }
 
 double resolved_rho(const SolverSettings& settings) {

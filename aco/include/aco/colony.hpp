@@ -31,6 +31,7 @@
 #include "aco/problem.hpp"
 #include "aco/random.hpp"
 #include "aco/solution.hpp"
+#include "aco/subset_family.hpp"
 #include "aco/termination.hpp"
 #include "aco/update_context.hpp"
 #include "aco/variant.hpp"
@@ -48,6 +49,11 @@ template <class P>
 requires PermutationProblem<P>
 struct FamilyOf<P> {
   using type = PermutationFamily<P>;
+};
+template <class P>
+requires SubsetProblem<P>
+struct FamilyOf<P> {
+  using type = SubsetFamily<P>;
 };
 
 struct ColonySettings {

@@ -14,9 +14,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "aco/pheromone_values.hpp"
+
 namespace antslam::aco {
 
-class EdgeTrail {
+class EdgeTrail : public PheromoneValues {
  public:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
@@ -24,7 +26,11 @@ class EdgeTrail {
 
   /// neighbours: n rows of k candidate ids, row-major.
   EdgeTrail(std::size_t n, std::size_t k, std::vector<std::uint32_t> neighbours)
-      : n_(n), k_(k), neighbour_(std::move(neighbours)), mirror_(n * k, kNone), tau_(n * k, 0.0) {
+      : PheromoneValues(n * k),
+        n_(n),
+        k_(k),
+        neighbour_(std::move(neighbours)),
+        mirror_(n * k, kNone) {
     if (neighbour_.size() != n * k) throw std::invalid_argument("EdgeTrail: size mismatch");
     for (std::size_t i = 0; i < n_; ++i)
       for (std::size_t r = 0; r < k_; ++r) {
@@ -42,7 +48,6 @@ class EdgeTrail {
   std::span<const double> row(std::uint32_t i) const {
     return {tau_.data() + std::size_t{i} * k_, k_};
   }
-  std::span<const double> values() const { return tau_; }
   double entry(std::size_t index) const { return tau_[index]; }
 
   /// Index of edge (i, j) in i's row, else in j's row, else kNone.
@@ -76,13 +81,6 @@ class EdgeTrail {
   /// A converged node of a symmetric tour keeps two strong edges.
   static constexpr double converged_branching() { return 2.0; }
 
-  void fill(double value) { std::fill(tau_.begin(), tau_.end(), value); }
-
-  void evaporate(double rho) {
-    const double keep = 1.0 - rho;
-    for (double& t : tau_) t *= keep;
-  }
-
   /// Calls f(tau) once on every candidate edge of the closed tour.
   template <class F>
   void update_path(std::span<const std::uint32_t> tour, F&& f) {
@@ -93,13 +91,6 @@ class EdgeTrail {
   void deposit(std::span<const std::uint32_t> tour, double amount) {
     update_path(tour, [amount](double& t) { t += amount; });
   }
-
-  void clamp(double lo, double hi) {
-    for (double& t : tau_) t = std::clamp(t, lo, hi);
-  }
-
-  double min_value() const { return *std::min_element(tau_.begin(), tau_.end()); }
-  double max_value() const { return *std::max_element(tau_.begin(), tau_.end()); }
 
   /// Mean lambda-branching factor over the candidate lists (as ACOTSP's node_branching).
   double branching_factor(double lambda) const {
@@ -125,7 +116,6 @@ class EdgeTrail {
   std::size_t k_ = 0;
   std::vector<std::uint32_t> neighbour_;
   std::vector<std::uint32_t> mirror_;
-  std::vector<double> tau_;
 };
 
 }  // namespace antslam::aco

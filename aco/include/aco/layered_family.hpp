@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "aco/layered_trail.hpp"
+#include "aco/local_update_after_construction.hpp"
 #include "aco/problem.hpp"
 #include "aco/random.hpp"
 #include "aco/update_context.hpp"
@@ -109,15 +110,11 @@ class LayeredFamily {
     return static_cast<std::uint32_t>(low) + (cdf[low] <= u ? 1U : 0U);
   }
 
-  /// ACS on a layered problem: a layer is visited once per tour, so applying the local update
-  /// after each synchronous step equals applying it after construction, in ant order.
+  /// Ant Colony System (local_update_after_construction.hpp).
   template <class Rule, class Update, class B>
   void construct_synchronous(const Rule& rule, const Update& update, B& backend,
                              std::span<Solution> ants, std::span<Rng> rngs) {
-    backend.for_each(ants.size(),
-                     [&](std::size_t a) { construct(a, ants[a].path, rngs[a], rule); });
-    for (const Solution& ant : ants)
-      trail_.update_path(ant.path, [&](double& tau) { update.local_update(tau); });
+    construct_then_local_update(*this, rule, update, backend, ants, rngs);
   }
 
  private:

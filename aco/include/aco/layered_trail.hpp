@@ -9,9 +9,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "aco/pheromone_values.hpp"
+
 namespace antslam::aco {
 
-class LayeredTrail {
+class LayeredTrail : public PheromoneValues {
  public:
   LayeredTrail() = default;
 
@@ -33,7 +35,6 @@ class LayeredTrail {
   }
   double at(std::size_t l, std::size_t option) const { return tau_[offset_[l] + option]; }
   double& at(std::size_t l, std::size_t option) { return tau_[offset_[l] + option]; }
-  std::span<const double> values() const { return tau_; }
 
   // --- operations shared with the edge trail, used by the pheromone-update policies ---
 
@@ -45,14 +46,6 @@ class LayeredTrail {
   /// Branching factor of a fully converged trail.
   static constexpr double converged_branching() { return 1.0; }
 
-  void fill(double value) { std::fill(tau_.begin(), tau_.end(), value); }
-
-  /// The evaporation part of eq. (2): tau <- (1 - rho) tau.
-  void evaporate(double rho) {
-    const double keep = 1.0 - rho;
-    for (double& t : tau_) t *= keep;
-  }
-
   /// Calls f(tau) on the pheromone of every option the path chose.
   template <class F>
   void update_path(std::span<const std::uint32_t> path, F&& f) {
@@ -63,13 +56,6 @@ class LayeredTrail {
   void deposit(std::span<const std::uint32_t> path, double amount) {
     update_path(path, [amount](double& t) { t += amount; });
   }
-
-  void clamp(double lo, double hi) {
-    for (double& t : tau_) t = std::clamp(t, lo, hi);
-  }
-
-  double min_value() const { return *std::min_element(tau_.begin(), tau_.end()); }
-  double max_value() const { return *std::max_element(tau_.begin(), tau_.end()); }
 
   /// Mean lambda-branching factor (Gambardella & Dorigo 1995): per layer, the number of options
   /// whose pheromone exceeds min + lambda (max - min).
@@ -86,7 +72,6 @@ class LayeredTrail {
 
  private:
   std::vector<std::size_t> offset_;
-  std::vector<double> tau_;
 };
 
 }  // namespace antslam::aco

@@ -1,5 +1,5 @@
 #pragma once
-// The two problem families the engine solves. A problem plugs in by satisfying one concept;
+// The three problem families the engine solves. A problem plugs in by satisfying one concept;
 // the engine never sees anything else of it.
 
 #include <concepts>
@@ -59,6 +59,26 @@ concept PermutationProblemWithNearestSearch = PermutationProblem<P> && requires(
   s.reset();
   s.remove(i);
   { s.nearest(i) } -> std::convertible_to<std::uint32_t>;
+};
+
+/// Subset-selection problem: the ant starts from the empty set and adds one element at a time,
+/// chosen among the candidates compatible with every element already taken, until no
+/// candidate is left; so every solution is a maximal set of pairwise compatible elements
+/// (a maximal clique when compatible(i, j) is adjacency, a maximal independent set when it is
+/// non-adjacency, a maximal packing for a conflict graph). compatible(i, j) must be symmetric;
+/// the cost is a function of the set (the elements in the order they were added).
+template <class P>
+concept SubsetProblem = requires(const P& p, std::uint32_t i, std::uint32_t j,
+                                 std::span<const std::uint32_t> subset) {
+  { p.element_count() } -> std::convertible_to<std::size_t>;
+  { p.compatible(i, j) } -> std::convertible_to<bool>;
+  { p.cost(subset) } -> std::convertible_to<double>;
+};
+
+/// Optional static heuristic desirability eta >= 0 of an element (1 when the problem gives none).
+template <class P>
+concept SubsetProblemWithHeuristic = SubsetProblem<P> && requires(const P& p, std::uint32_t i) {
+  { p.heuristic(i) } -> std::convertible_to<double>;
 };
 
 }  // namespace antslam::aco

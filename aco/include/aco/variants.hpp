@@ -160,6 +160,8 @@ decltype(auto) with_colony(const Problem& problem, const Parameters& p, Exec bac
   std::size_t decisions = 0;
   if constexpr (kPermutation) {
     decisions = problem.size();
+  } else if constexpr (SubsetProblem<Problem>) {
+    decisions = problem.element_count();
   } else {
     decisions = problem.layer_count();
   }

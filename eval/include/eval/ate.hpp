@@ -8,6 +8,7 @@
 
 #include "eval/association.hpp"
 #include "eval/statistics.hpp"
+#include "slamgraph/pose2.hpp"
 
 namespace antslam::eval {
 
@@ -21,5 +22,10 @@ struct AteResult {
 /// align(pairs) for the usual aligned ATE, the identity (default) for the raw error.
 /// Throws std::invalid_argument if `pairs` is empty.
 AteResult ate(std::span<const PosePair> pairs, const slam::Pose2& alignment = {});
+
+/// The aligned ATE of two pose lists matched by index (e.g. the vertices of a pose graph and its
+/// reference poses). Throws std::invalid_argument if they differ in length or are empty.
+AteResult indexed_ate(std::span<const slam::Pose2> estimate,
+                      std::span<const slam::Pose2> reference);
 
 }  // namespace antslam::eval

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "slamgraph/fragment_set.hpp"
+#include "slamgraph/g2o.hpp"
 
 namespace antslam::slam {
 
@@ -27,7 +28,7 @@ struct CeresSettings {
 };
 
 struct CeresResult {
-  std::vector<Pose2> frames;  ///< optimised world poses of F_1..F_N
+  std::vector<Pose2> frames;  ///< optimised world poses of F_1..F_N (of the vertices)
   double final_cost = 0.0;    ///< Ceres' cost: chi2 / 2 (plain) or the eq. (10) weight (robust)
   int iterations = 0;         ///< solver iterations
   bool converged = false;     ///< Ceres reported convergence
@@ -42,5 +43,33 @@ void show_solver_logs(bool show);
 /// N - 1). Throws std::invalid_argument on wrong sizes, std::runtime_error if Ceres fails.
 CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> initial, bool robust,
                                 const CeresSettings& settings);
+
+/// The loss of one pose-graph edge on its squared whitened residual s = r^T Omega r; Ceres
+/// minimises 1/2 sum rho(s).
+struct EdgeLoss {
+  enum class Kind {
+    squared,   ///< rho(s) = s: least squares
+    cauchy,    ///< rho(s) = c^2 log(1 + s / c^2), c = parameter (Ceres' CauchyLoss)
+    dcs,       ///< dynamic covariance scaling (Agarwal et al. 2013), Phi = parameter: rho(s) = s
+               ///< for s <= Phi, else Phi (3 s - Phi) / (Phi + s); its weight rho'(s) =
+               ///< (2 Phi / (Phi + s))^2 is the square of DCS's scale (MacTavish & Barfoot 2015)
+    weighted,  ///< rho(s) = w s, w = parameter >= 0 (the weights of graduated non-convexity)
+  };
+  Kind kind = Kind::squared;  ///< which loss
+  double parameter = 1.0;     ///< c (chi units), Phi (chi^2 units) or w (dimensionless)
+};
+
+/// Ceres on a pose graph: one residual per edge, r = X_a^-1 X_b - z (angle wrapped, a < b: an
+/// edge stored from the higher vertex is inverted to first order) whitened by the upper Cholesky
+/// factor of its information matrix, under losses[e] (an edge weighted 0 is left out of the
+/// problem: the same optimum without its fill-in of the sparse factorisation); vertex 0 held
+/// constant;
+/// started from `initial` (one pose per vertex). Throws std::invalid_argument on wrong sizes,
+/// std::runtime_error if Ceres fails.
+CeresResult optimize_pose_graph(const PoseGraph& graph, std::span<const Pose2> initial,
+                                std::span<const EdgeLoss> losses, const CeresSettings& settings);
+
+/// r^T Omega r of every edge at the vertex poses `poses` (the residual of optimize_pose_graph).
+std::vector<double> edge_chi2(const PoseGraph& graph, std::span<const Pose2> poses);
 
 }  // namespace antslam::slam

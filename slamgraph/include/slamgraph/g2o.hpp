@@ -77,8 +77,9 @@ struct G2oImportSettings {
   std::uint64_t seed = 1;    ///< seeds the samples
 };
 
-/// Throws std::invalid_argument naming `source` if some vertex i >= 1 has no edge to i - 1
-/// (the ants' samples are poses of vertex i in vertex i-1's frame), or if there is no closure.
+/// Returns a valid set (validate()). Throws std::invalid_argument naming `source` if some vertex
+/// i >= 1 has no edge to i - 1 (the ants' samples are poses of vertex i in vertex i-1's frame),
+/// if there is no closure, if an edge gives no Gaussian, or if the set is not valid.
 FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSettings& settings,
                                   const std::string& source);
 

@@ -2,6 +2,7 @@
 #include <aco/synthetic_layered.hpp>
 #include <aco/variants.hpp>
 #include <baselines/tinyslam.hpp>
+#include <clique/exact.hpp>
 #include <cstdio>
 #include <eval/statistics.hpp>
 #include <frontend/frontend.hpp>
@@ -39,6 +40,11 @@ int main() {
   const as::slam::FragmentSet set = as::slam::synthesize(as::slam::synth_preset("paper9"));
   const auto residuals = as::mapping::closure_residuals(set, set.reference);
   failures += residuals.size() == set.closures.size() ? 0 : 1;
+
+  // Clique: the maximum clique of a triangle with a pendant vertex is the triangle.
+  const std::vector<as::clique::Edge> edges{{0, 1}, {1, 2}, {0, 2}, {2, 3}};
+  failures +=
+      as::clique::maximum_clique_exact(as::clique::Graph(4, edges)).clique.weight == 3.0 ? 0 : 1;
 
   // Frontend, baselines, eval: settings that validate, statistics of {1, 3}.
   as::frontend::validate(as::frontend::FrontendSettings{});

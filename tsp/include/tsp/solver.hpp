@@ -36,6 +36,11 @@ double nearest_neighbour_length(const TspProblem& problem);
 aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSettings& settings);
 /// Ants per iteration and evaporation rate actually used.
 std::size_t resolved_ants(const TspProblem& problem, const SolverSettings& settings);
+std::size_t resolved_ants(std::size_t cities, const SolverSettings& settings);
+/// Bytes the colony holds for its ants at the least: each ant's tour (4 bytes a city) and its
+/// visited marks (1 byte a city). Without local search the default is one ant per city, so this
+/// grows as n^2 (a 1,000,000-city instance: 5 TB).
+double colony_memory_bytes(std::size_t cities, std::size_t ants);
 double resolved_rho(const SolverSettings& settings);
 
 /// Runs settings.aco.variant on settings.backend; the result records the settings that ran.

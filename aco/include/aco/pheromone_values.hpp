@@ -1,0 +1,38 @@
+#pragma once
+// The pheromone values of a trail, one double per trail component, and the operations that every
+// trail (layered, edge, subset) shares and the pheromone-update policies call.
+
+#include <algorithm>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace antslam::aco {
+
+class PheromoneValues {
+ public:
+  std::span<const double> values() const { return tau_; }
+
+  void fill(double value) { std::fill(tau_.begin(), tau_.end(), value); }
+
+  /// The evaporation part of eq. (2): tau <- (1 - rho) tau.
+  void evaporate(double rho) {
+    const double keep = 1.0 - rho;
+    for (double& t : tau_) t *= keep;
+  }
+
+  void clamp(double lo, double hi) {
+    for (double& t : tau_) t = std::clamp(t, lo, hi);
+  }
+
+  double min_value() const { return *std::min_element(tau_.begin(), tau_.end()); }
+  double max_value() const { return *std::max_element(tau_.begin(), tau_.end()); }
+
+ protected:
+  PheromoneValues() = default;
+  explicit PheromoneValues(std::size_t count) : tau_(count, 0.0) {}
+
+  std::vector<double> tau_;  // the trails index it directly in their hot loops
+};
+
+}  // namespace antslam::aco

@@ -1,0 +1,49 @@
+#include "clique/aco_search.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "aco/backend_factory.hpp"
+#include "clique/greedy.hpp"
+#include "clique/local_search.hpp"
+#include "clique/problem.hpp"
+
+namespace antslam::clique {
+
+AcoSearchResult maximum_clique_aco(const Graph& graph, const AcoSearchSettings& settings) {
+  if (graph.size() == 0) throw std::invalid_argument("ant clique search: the graph is empty");
+  const aco::Termination& t = settings.termination;
+  if (t.max_iterations == 0 && !(t.time_limit_s > 0.0) && !(t.cpu_time_limit_s > 0.0) &&
+      t.stagnation_iterations == 0)
+    throw std::invalid_argument(
+        "ant clique search: set iterations, a time budget or stagnation (the colouring bound "
+        "alone may never be reached)");
+  const auto start = std::chrono::steady_clock::now();
+  const CliqueProblem problem(graph);
+  const double bound = colouring_bound(graph);
+  aco::Termination termination = t;
+  termination.target_cost = std::max(termination.target_cost, problem.cost_of_weight(bound));
+  // The backend type-erased (one indirect call per iteration phase, the per-ant work stays
+  // static): a third of the instantiations of with_backend.
+  const auto solve = [&](auto local_search) {
+    return aco::solve(problem, settings.parameters, termination,
+                      aco::make_backend(settings.backend, settings.threads), local_search);
+  };
+  const aco::RunResult run =
+      settings.local_search ? solve(SwapLocalSearch{}) : solve(aco::NoLocalSearch{});
+
+  AcoSearchResult result;
+  result.iterations = run.iterations;
+  result.reason = run.reason;
+  result.clique.vertices = run.best.path;
+  std::sort(result.clique.vertices.begin(), result.clique.vertices.end());
+  result.clique.weight = weight_of(graph, result.clique.vertices);
+  result.clique.upper_bound = bound;
+  result.clique.optimal = result.clique.weight >= bound;
+  result.clique.elapsed_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace antslam::clique

@@ -1,0 +1,238 @@
+// antslam robust: one robust back end on a g2o pose graph (slamgraph/robust.hpp); writes the
+// optimised graph with the edges it kept, the accepted loop closures and a JSON report with
+// precision and recall (when the false closures are known) and the ATE against references.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aco/variant.hpp"
+#include "backend_option.hpp"
+#include "cli/errors.hpp"
+#include "cli/output_files.hpp"
+#include "commands.hpp"
+#include "eval/ate.hpp"
+#include "slamgraph/g2o.hpp"
+#include "slamgraph/optimize.hpp"
+#include "slamgraph/outliers.hpp"
+#include "slamgraph/robust.hpp"
+#include "validators.hpp"
+
+namespace antslam::cli {
+
+namespace {
+
+constexpr std::uint64_t kMaxIterations = 100'000'000;  ///< --iterations (count)
+
+struct RobustOptions {
+  std::string input;
+  std::string method = "pcm-aco";
+  std::string output;
+  std::vector<std::string> references;
+  std::string outliers;
+  std::string variant = "mmas";
+  std::string backend = "auto";
+  slam::RobustSettings s;
+};
+
+struct Reference {
+  std::string path;
+  eval::AteResult ate;
+};
+
+/// The false-closure list: --outliers, else GRAPH.outliers.txt beside the input if it exists.
+std::optional<std::vector<bool>> outlier_flags(const RobustOptions& o, const slam::PoseGraph& graph,
+                                               const slam::ChainSplit& split) {
+  std::filesystem::path path = o.outliers;
+  if (path.empty()) {
+    path = slam::outliers_path_of(o.input);
+    if (!std::filesystem::exists(path)) return std::nullopt;
+  }
+  return slam::read_outlier_flags(path, graph, split);
+}
+
+std::string outliers_file(const RobustOptions& o) {
+  return o.outliers.empty() ? slam::outliers_path_of(o.input).string() : o.outliers;
+}
+
+nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& graph,
+                              const slam::RobustResult& r,
+                              const std::optional<slam::AcceptanceScores>& sc,
+                              const std::vector<Reference>& references) {
+  const auto optional_number = [](const std::optional<double>& v) {
+    return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
+  };
+  nlohmann::ordered_json j = {
+      {"format", "antslam-robust-result"},
+      {"version", 1},
+      {"input", o.input},
+      {"method", o.method},
+      {"vertices", graph.vertices.size()},
+      {"edges", graph.edges.size()},
+      {"closures", r.split.closures.size()},
+      {"accepted", std::count(r.accepted.begin(), r.accepted.end(), true)},
+      {"time_s",
+       {{"total", r.total_s},
+        {"consistency", r.consistency_s},
+        {"clique", r.clique_s},
+        {"optimize", r.optimize_s}}},
+      {"settings",
+       {{"inlier_confidence", o.s.inlier_confidence},
+        {"cauchy_scale", o.s.cauchy_scale},
+        {"dcs_phi", o.s.dcs_phi},
+        {"gnc_mu_factor", o.s.gnc.mu_factor},
+        {"exact_time_limit_s", o.s.exact.time_limit_s},
+        {"aco_variant", o.variant},
+        {"aco_ants", o.s.aco.parameters.ants},
+        {"aco_seed", o.s.aco.parameters.seed},
+        {"aco_max_iterations", o.s.aco.termination.max_iterations},
+        {"aco_stagnation_iterations", o.s.aco.termination.stagnation_iterations},
+        {"backend", o.backend},
+        {"threads", o.s.threads}}}};
+  if (sc) {
+    j["outliers"] = {{"file", outliers_file(o)},
+                     {"count", sc->outliers},
+                     {"accepted", sc->accepted_outliers},
+                     {"precision", optional_number(sc->precision)},
+                     {"recall", optional_number(sc->recall)}};
+  }
+  if (r.clique) {
+    j["clique"] = {{"size", r.clique->clique.vertices.size()},
+                   {"upper_bound", r.clique->clique.upper_bound},
+                   {"optimal", r.clique->clique.optimal},
+                   {"consistent_pairs", r.clique->consistent_pairs},
+                   {"work", r.clique->work}};
+  }
+  if (r.method == slam::RobustMethod::gnc) j["gnc_steps"] = r.gnc_steps;
+  j["ate"] = nlohmann::ordered_json::array();
+  for (const Reference& ref : references)
+    j["ate"].push_back({{"reference", ref.path},
+                        {"rmse_m", ref.ate.translation_m.rmse},
+                        {"max_m", ref.ate.translation_m.max},
+                        {"rotation_rmse_deg", ref.ate.rotation_deg.rmse}});
+  return j;
+}
+
+void run(RobustOptions o) {
+  const slam::RobustMethod method = *slam::parse_robust_method(o.method);  // checked at parse
+  o.s.aco.parameters.variant = *aco::parse_variant(o.variant);             // time, both
+  o.s.backend = parse_backend_option(o.backend);
+  aco::resolve(o.s.backend, o.s.threads);  // serial on more than one thread fails here, up front
+  OutputFiles outputs;
+  const std::filesystem::path graph_out = outputs.add(o.output + ".g2o");
+  const std::filesystem::path accepted_out = outputs.add(o.output + ".accepted.txt");
+  const std::filesystem::path json_out = outputs.add(o.output + ".json");
+
+  // Everything is read and checked before anything is computed.
+  const slam::PoseGraph graph = slam::read_g2o_file(o.input);
+  const slam::ChainSplit split =
+      in_context_of(o.input, [&] { return slam::split_chain(graph, o.input); });
+  const std::optional<std::vector<bool>> outlier =
+      in_context_of(outliers_file(o), [&] { return outlier_flags(o, graph, split); });
+  std::vector<std::vector<slam::Pose2>> reference_poses;
+  for (const std::string& path : o.references) {
+    reference_poses.push_back(slam::read_reference_poses(path));
+    if (reference_poses.back().size() != graph.vertices.size())
+      throw InputError(path + ": has " + std::to_string(reference_poses.back().size()) +
+                       " poses, the graph " + std::to_string(graph.vertices.size()));
+  }
+
+  const slam::RobustResult r =
+      in_context_of(o.input, [&] { return slam::solve_robust(graph, method, o.s, o.input); });
+
+  std::optional<slam::AcceptanceScores> scores;
+  if (outlier) scores = slam::score_acceptance(r.accepted, *outlier);
+  std::vector<Reference> references;
+  for (std::size_t i = 0; i < o.references.size(); ++i)
+    references.push_back({o.references[i], eval::indexed_ate(r.poses, reference_poses[i])});
+
+  outputs.write(graph_out,
+                [&](std::ostream& out) { slam::write_g2o(out, slam::kept_graph(graph, r)); });
+  outputs.write(accepted_out, [&](std::ostream& out) {
+    for (std::size_t k = 0; k < split.closures.size(); ++k)
+      if (r.accepted[k]) {
+        const slam::PoseGraphEdge& e = graph.edges[split.closures[k]];
+        out << e.from << ' ' << e.to << '\n';
+      }
+  });
+  outputs.write(json_out, [&](std::ostream& out) {
+    out << report(o, graph, r, scores, references).dump(2) << '\n';
+  });
+  outputs.commit();
+
+  const auto accepted = std::count(r.accepted.begin(), r.accepted.end(), true);
+  std::printf("%s on %s: %zu of %zu loop closures accepted", o.method.c_str(), o.input.c_str(),
+              static_cast<std::size_t>(accepted), split.closures.size());
+  if (scores)
+    std::printf(" (%zu of %zu false ones; precision %.4f, recall %.4f)", scores->accepted_outliers,
+                scores->outliers, scores->precision.value_or(1.0), scores->recall.value_or(1.0));
+  std::printf("\n");
+  for (const Reference& ref : references)
+    std::printf("  ATE against %s: %.4f m rms, %.4f m max\n", ref.path.c_str(),
+                ref.ate.translation_m.rmse, ref.ate.translation_m.max);
+  std::printf("  time %.3f s (consistency %.3f, clique %.3f, optimisation %.3f)\n", r.total_s,
+              r.consistency_s, r.clique_s, r.optimize_s);
+  std::printf("wrote %s.g2o, %s.accepted.txt, %s.json\n", o.output.c_str(), o.output.c_str(),
+              o.output.c_str());
+}
+
+}  // namespace
+
+void add_robust_command(CLI::App& app) {
+  auto o = std::make_shared<RobustOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "robust", "Optimise a g2o pose graph whose loop closures may be false (robust back ends)");
+  cmd->add_option("input", o->input, "g2o pose graph (VERTEX_SE2, EDGE_SE2)")->required();
+  std::vector<std::string> methods;
+  std::string help = "back end:";
+  for (const slam::RobustMethodInfo& m : slam::kRobustMethods) {
+    methods.emplace_back(m.name);
+    help += " " + std::string(m.name) + " (" + std::string(m.summary) + ")";
+  }
+  cmd->add_option("--method", o->method, help)
+      ->check(CLI::IsMember(methods))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", o->output,
+                  "prefix of PREFIX.g2o, PREFIX.accepted.txt and PREFIX.json")
+      ->required();
+  cmd->add_option("--reference", o->references,
+                  "poses to compute the ATE against (.g2o, .tum or `x y theta` lines); repeatable");
+  cmd->add_option("--outliers", o->outliers,
+                  "the false closures, `i j` a line (default: GRAPH.outliers.txt if it exists)");
+  cmd->add_option("--confidence", o->s.inlier_confidence,
+                  "chi-square (3 dof) probability of the consistency and inlier tests")
+      ->check(finite_in(1e-9, 1.0 - 1e-9))
+      ->capture_default_str();
+  cmd->add_option("--exact-time-limit", o->s.exact.time_limit_s,
+                  "pcm-exact: branch-and-bound budget, s (0 = none)")
+      ->check(finite_in(0.0, 1e9))
+      ->capture_default_str();
+  cmd->add_option("--variant", o->variant, "pcm-aco: ACO variant")
+      ->check(CLI::IsMember(aco::variant_names()))
+      ->capture_default_str();
+  cmd->add_option("--ants", o->s.aco.parameters.ants, "pcm-aco: ants (0 = the variant's default)")
+      ->check(count_in(0, slam::kMaxAnts))
+      ->capture_default_str();
+  cmd->add_option("--iterations", o->s.aco.termination.max_iterations,
+                  "pcm-aco: iterations at most")
+      ->check(count_in(1, kMaxIterations))
+      ->capture_default_str();
+  cmd->add_option("--seed", o->s.aco.parameters.seed, "pcm-aco: seed of the ants")
+      ->check(non_negative_integer())
+      ->capture_default_str();
+  cmd->add_option("--threads", o->s.threads,
+                  "threads for the consistency pairs and the ants (0 = all cores)")
+      ->check(count_in(0, kMaxThreads))
+      ->capture_default_str();
+  add_backend_option(*cmd, o->backend);
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace antslam::cli

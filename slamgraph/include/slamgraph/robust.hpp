@@ -1,0 +1,130 @@
+#pragma once
+// Robust back ends on a pose graph with possibly false loop closures, all started from the
+// odometry chain and all ending in Ceres:
+//   ls         least squares on every edge;
+//   cauchy     Ceres' Cauchy loss on the closures;
+//   dcs        dynamic covariance scaling on the closures (Agarwal et al. 2013);
+//   gnc        graduated non-convexity with a truncated-least-squares cost (Yang et al. 2020):
+//              weighted least squares whose closure weights follow the GNC-TLS rule as the
+//              surrogate's parameter mu grows, from a convex start to the TLS cost, then least
+//              squares on the closures it kept;
+//   pcm-exact  the maximum clique of pairwise consistent closures (PCM, Mangelson et al. 2018)
+//              by branch and bound, then least squares on it;
+//   pcm-aco    the same clique found by the ants (Ant-Clique), then least squares on it.
+// Odometry (edges between consecutive vertices) is always kept with the squared loss. A closure
+// counts as accepted by ls (every closure), by cauchy and dcs when its final residual passes the
+// chi-square test of `inlier_confidence`, by gnc when its final weight is above 1/2, and by the
+// PCM methods when it is in the clique.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "aco/backend_kind.hpp"
+#include "clique/aco_search.hpp"
+#include "clique/exact.hpp"
+#include "slamgraph/ceres_baseline.hpp"
+#include "slamgraph/chain.hpp"
+#include "slamgraph/consistency.hpp"
+#include "slamgraph/g2o.hpp"
+
+namespace antslam::slam {
+
+enum class RobustMethod { ls, cauchy, dcs, gnc, pcm_exact, pcm_aco };
+
+struct RobustMethodInfo {
+  RobustMethod value;
+  std::string_view name;     ///< the name options and files use
+  std::string_view summary;  ///< one line for help texts
+};
+
+inline constexpr std::array<RobustMethodInfo, 6> kRobustMethods{{
+    {RobustMethod::ls, "ls", "least squares on every edge"},
+    {RobustMethod::cauchy, "cauchy", "Cauchy loss on the loop closures"},
+    {RobustMethod::dcs, "dcs", "dynamic covariance scaling (Agarwal et al. 2013)"},
+    {RobustMethod::gnc, "gnc",
+     "graduated non-convexity, truncated least squares (Yang et al. 2020)"},
+    {RobustMethod::pcm_exact, "pcm-exact", "PCM maximum clique by branch and bound, then ls"},
+    {RobustMethod::pcm_aco, "pcm-aco", "PCM maximum clique by the ants, then ls"},
+}};
+
+std::string_view to_string(RobustMethod method);
+std::optional<RobustMethod> parse_robust_method(std::string_view name);
+
+struct GncSettings {
+  double mu_factor = 1.4;          ///< mu grows by this factor per step (Yang et al. 2020)
+  std::size_t max_steps = 1000;    ///< graduation steps at most (count)
+  double weight_tolerance = 1e-6;  ///< weights this close to 0 or 1 count as decided
+  int step_iterations = 10;        ///< Levenberg-Marquardt iterations per step (count), each
+                                   ///< step warm-started from the last; the final solve on the
+                                   ///< kept closures runs to convergence (RobustSettings::ceres)
+};
+
+struct RobustSettings {
+  double inlier_confidence = 0.99;  ///< chi-square (3 dof) probability: the PCM threshold, the
+                                    ///< GNC truncation c^2 and the acceptance test of cauchy/dcs
+  double cauchy_scale = 1.0;        ///< c of the Cauchy loss, chi units (Ceres' CauchyLoss(1))
+  double dcs_phi = 1.0;             ///< Phi of DCS, chi^2 units (Agarwal et al. 2013 use 1)
+  GncSettings gnc;                  ///< graduated non-convexity
+  clique::ExactSettings exact;      ///< pcm-exact: branch and bound (60 s budget)
+  clique::AcoSearchSettings aco;    ///< pcm-aco: variant, ants, termination (backend: below)
+  CeresSettings ceres;              ///< every Ceres solve
+  aco::BackendKind backend = aco::BackendKind::automatic;  ///< consistency pairs and ants
+  std::size_t threads = 1;                                 ///< their threads; 0 = all cores
+};
+
+/// The maximum-clique stage of the PCM methods.
+struct CliqueReport {
+  std::size_t consistent_pairs = 0;  ///< edges of the consistency graph
+  clique::CliqueResult clique;       ///< the trusted closures (indices into split.closures)
+  std::uint64_t work = 0;            ///< branch-and-bound nodes (exact) or colony iterations
+};
+
+struct RobustResult {
+  RobustMethod method = RobustMethod::ls;  ///< what ran
+  ChainSplit split;                        ///< the graph's chain and closures
+  std::vector<Pose2> poses;                ///< optimised vertex poses
+  std::vector<bool> accepted;              ///< per loop closure, in split.closures order
+  std::optional<CliqueReport> clique;      ///< PCM methods only
+  std::size_t gnc_steps = 0;               ///< gnc only: graduation steps run
+  double consistency_s = 0.0;              ///< wall-clock seconds: pairwise consistency
+  double clique_s = 0.0;                   ///< maximum clique
+  double optimize_s = 0.0;                 ///< Ceres solves (all of them)
+  double total_s = 0.0;                    ///< the whole call
+};
+
+/// PCM's selection: a maximum clique of the consistency graph, by branch and bound (pcm_exact) or
+/// by the ants (pcm_aco), with the clique settings, backend and threads of `settings`; what
+/// solve_robust's PCM methods run, for a pose graph or a fragment set alike. Throws
+/// std::invalid_argument for another method or invalid settings.
+CliqueReport maximum_consistent_set(const ConsistencyGraph& consistency, RobustMethod method,
+                                    const RobustSettings& settings);
+
+/// Throws std::runtime_error "source: ..." for a graph whose chain is broken and
+/// std::invalid_argument for invalid settings.
+RobustResult solve_robust(const PoseGraph& graph, RobustMethod method,
+                          const RobustSettings& settings, const std::string& source);
+
+/// The optimised graph: the result's poses, every odometry edge and the accepted closures, in
+/// input order.
+PoseGraph kept_graph(const PoseGraph& graph, const RobustResult& result);
+
+/// Accepted closures against the known false ones: precision = accepted true closures /
+/// accepted closures, recall = accepted true closures / true closures (each empty when its
+/// denominator is 0).
+struct AcceptanceScores {
+  std::size_t closures = 0;           ///< loop closures in the graph
+  std::size_t accepted = 0;           ///< accepted by the method
+  std::size_t outliers = 0;           ///< false closures in the graph
+  std::size_t accepted_outliers = 0;  ///< false closures accepted
+  std::optional<double> precision;    ///< fraction of accepted that are true
+  std::optional<double> recall;       ///< fraction of true that are accepted
+};
+/// Throws std::invalid_argument if the two lists differ in length.
+AcceptanceScores score_acceptance(const std::vector<bool>& accepted,
+                                  const std::vector<bool>& outlier);
+
+}  // namespace antslam::slam

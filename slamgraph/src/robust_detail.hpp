@@ -1,0 +1,39 @@
+#pragma once
+// Shared by the robust back ends (robust.cpp, robust_gnc.cpp, robust_pcm.cpp).
+
+#include <chrono>
+#include <vector>
+
+#include "slamgraph/ceres_baseline.hpp"
+#include "slamgraph/chain.hpp"
+#include "slamgraph/g2o.hpp"
+#include "slamgraph/robust.hpp"
+
+namespace antslam::slam::detail {
+
+/// Seconds since `start`.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The squared loss on odometry, closure_loss[k] on closure k.
+std::vector<EdgeLoss> edge_losses(const PoseGraph& graph, const ChainSplit& split,
+                                  const std::vector<EdgeLoss>& closure_loss);
+
+/// Ceres from `initial` with the given losses; adds its time to result.optimize_s and stores
+/// the poses in result.poses.
+void optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
+              const std::vector<EdgeLoss>& losses, const RobustSettings& settings,
+              RobustResult& result);
+
+/// The squared residual r^T Omega r of every closure at `poses`, in split order.
+std::vector<double> closure_chi2(const PoseGraph& graph, const ChainSplit& split,
+                                 const std::vector<Pose2>& poses);
+
+void run_gnc(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
+             const RobustSettings& settings, RobustResult& result);
+
+void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
+             const RobustSettings& settings, RobustResult& result);
+
+}  // namespace antslam::slam::detail

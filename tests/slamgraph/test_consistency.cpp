@@ -1,0 +1,219 @@
+// Pairwise consistency of loop closures: the chi-square quantile, the chain split, hand-computed
+// cycles on a straight chain, and the O(1) prefix-sum test against the cycle composed step by
+// step with its covariance from a numerical Jacobian, on graphs with correlated covariances.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "aco/backend_kind.hpp"
+#include "pose_graphs.hpp"
+#include "slamgraph/chain.hpp"
+#include "slamgraph/chi_square.hpp"
+#include "slamgraph/consistency.hpp"
+#include "support.hpp"
+
+namespace antslam::slam {
+namespace {
+
+TEST(ChiSquare3, KnownQuantiles) {
+  EXPECT_NEAR(chi_square3_quantile(0.95), 7.814727903, 1e-8);
+  EXPECT_NEAR(chi_square3_quantile(0.99), 11.344866730, 1e-8);
+  EXPECT_NEAR(chi_square3_cdf(chi_square3_quantile(0.5)), 0.5, 1e-12);
+  EXPECT_EQ(chi_square3_cdf(-1.0), 0.0);
+  EXPECT_THROW(chi_square3_quantile(1.0), std::invalid_argument);
+  EXPECT_THROW(chi_square3_quantile(0.0), std::invalid_argument);
+}
+
+PoseGraphEdge edge(std::size_t i, std::size_t j, Pose2 z, const Eigen::Matrix3d& covariance) {
+  return {i, j, z, covariance.inverse()};
+}
+
+TEST(Chain, SplitsOdometryFromClosuresInEitherDirection) {
+  PoseGraph g;
+  g.vertices.resize(4);
+  const Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
+  g.edges = {edge(0, 1, {1, 0, 0}, c), edge(2, 1, {-1, 0, 0}, c), edge(0, 2, {2, 0, 0}, c),
+             edge(1, 2, {1, 0, 0}, c), edge(2, 3, {1, 0, 0}, c),  edge(3, 0, {-3, 0, 0}, c)};
+  const ChainSplit split = split_chain(g, "g");
+  EXPECT_EQ(split.chain, (std::vector<std::size_t>{0, 1, 4}));  // edge 3 is odometry too
+  EXPECT_EQ(split.closures, (std::vector<std::size_t>{2, 5}));
+  const std::vector<Pose2> poses = chain_poses(g, split);
+  EXPECT_NEAR(poses[3].x, 3.0, 1e-12);
+  g.edges.erase(g.edges.begin() + 4);
+  EXPECT_EQ(testing::error_of([&] { split_chain(g, "g.g2o"); }),
+            "g.g2o: no edge between vertices 2 and 3 (the graph must chain consecutive poses)");
+}
+
+/// A straight chain of unit steps along x with isotropic translation variance sigma2 and a
+/// negligible heading variance, so that cycle covariances are sums of translation variances.
+PoseGraph straight_chain(std::size_t n, double sigma2) {
+  PoseGraph g;
+  for (std::size_t i = 0; i < n; ++i) g.vertices.push_back({static_cast<double>(i), 0.0, 0.0});
+  const Eigen::Matrix3d c = Eigen::Vector3d(sigma2, sigma2, 1e-14).asDiagonal();
+  for (std::size_t i = 0; i + 1 < n; ++i) g.edges.push_back(edge(i, i + 1, {1, 0, 0}, c));
+  return g;
+}
+
+TEST(Consistency, HandComputedCyclesOnAStraightChain) {
+  const double s2 = 0.01, c2 = 0.04, delta = 0.3;
+  PoseGraph g = straight_chain(10, s2);
+  const Eigen::Matrix3d c = Eigen::Vector3d(c2, c2, 1e-14).asDiagonal();
+  g.edges.push_back(edge(0, 3, {3.0 + delta, 0, 0}, c));  // overlapping spans: 0-3 and 1-4
+  g.edges.push_back(edge(4, 1, {-3.0, 0, 0}, c));         // stored backwards
+  g.edges.push_back(edge(5, 7, {2.0, delta, 0}, c));      // disjoint from 0-3
+  g.edges.push_back(edge(0, 9, {9.0, 0, 0}, c));          // holds 5-7 inside
+  const CycleTest test(g, split_chain(g, "g"));
+  // Steps 0 and 3 lie in one span only: 2 s2 + 2 c2 in x.
+  EXPECT_NEAR(test.squared_distance(0, 1), delta * delta / (2 * s2 + 2 * c2), 1e-9);
+  // Disjoint: steps 0, 1, 2 and 5, 6; the error is delta in x and delta in y.
+  EXPECT_NEAR(test.squared_distance(0, 2), 2 * delta * delta / (5 * s2 + 2 * c2), 1e-9);
+  // Nested: 9 - 2 = 7 steps; the cycle is (-delta... ) in y only.
+  EXPECT_NEAR(test.squared_distance(2, 3), delta * delta / (7 * s2 + 2 * c2), 1e-9);
+  EXPECT_NEAR(test.squared_distance(3, 2), test.squared_distance(2, 3), 1e-12);
+  // Against the odometry between its own ends: 3 steps and the closure.
+  EXPECT_NEAR(test.squared_distance(0), delta * delta / (3 * s2 + c2), 1e-9);
+  EXPECT_NEAR(test.squared_distance(3), 0.0, 1e-12);
+}
+
+/// The cycle a1 -z1-> b1 -odometry-> b2 -z2^-1-> a2 -odometry-> a1 composed from the
+/// measurements, its covariance from the numerical Jacobian with respect to every measurement
+/// it uses (right perturbations z * d; a step the cycle passes twice, once each way, is one
+/// measurement), and its squared Mahalanobis distance.
+double brute_force_cycle(const PoseGraph& g, const ChainSplit& split, std::size_t k,
+                         std::size_t l) {
+  struct Use {
+    std::size_t edge;  // index into g.edges
+    std::size_t from;  // the vertex the measurement is oriented from
+    bool inverse;
+  };
+  std::vector<Use> uses;
+  const auto span = [&](std::size_t c) {
+    const PoseGraphEdge& e = g.edges[split.closures[c]];
+    return std::pair{std::min(e.from, e.to), std::max(e.from, e.to)};
+  };
+  const auto odometry = [&](std::size_t from, std::size_t to) {
+    if (from < to)
+      for (std::size_t s = from; s < to; ++s) uses.push_back({split.chain[s], s, false});
+    for (std::size_t s = from; s-- > to;) uses.push_back({split.chain[s], s, true});
+  };
+  const auto [a1, b1] = span(k);
+  const auto [a2, b2] = span(l);
+  uses.push_back({split.closures[k], a1, false});
+  odometry(b1, b2);
+  uses.push_back({split.closures[l], a2, true});
+  odometry(a2, a1);
+  std::vector<std::size_t> edges;  // the distinct measurements, one perturbation each
+  std::vector<Eigen::Index> slot;  // of each use
+  std::vector<Pose2> mean;         // of each use
+  for (const Use& u : uses) {
+    auto it = std::find(edges.begin(), edges.end(), u.edge);
+    if (it == edges.end()) it = edges.insert(edges.end(), u.edge);
+    slot.push_back(3 * static_cast<Eigen::Index>(it - edges.begin()));
+    mean.push_back(oriented(g.edges[u.edge], u.from).mean());
+  }
+  const auto cycle = [&](const Eigen::VectorXd& d) {
+    Pose2 p;
+    for (std::size_t u = 0; u < uses.size(); ++u) {
+      const Pose2 z = mean[u] * Pose2::from_vector(d.segment<3>(slot[u]));
+      p = p * (uses[u].inverse ? z.inverse() : z);
+    }
+    return p.vector();
+  };
+  const auto dims = static_cast<Eigen::Index>(3 * edges.size());
+  const Eigen::Vector3d e = cycle(Eigen::VectorXd::Zero(dims));
+  Eigen::MatrixXd jacobian(3, dims), covariance = Eigen::MatrixXd::Zero(dims, dims);
+  for (Eigen::Index i = 0; i < dims; ++i) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(dims);
+    d[i] = 1e-6;
+    const Eigen::Vector3d plus = cycle(d);
+    d[i] = -1e-6;
+    Eigen::Vector3d diff = plus - cycle(d);
+    diff.z() = wrap_angle(diff.z());
+    jacobian.col(i) = diff / 2e-6;
+  }
+  for (std::size_t u = 0; u < uses.size(); ++u)
+    covariance.block<3, 3>(slot[u], slot[u]) =
+        oriented(g.edges[uses[u].edge], uses[u].from).covariance();
+  const Eigen::Matrix3d cycle_covariance = jacobian * covariance * jacobian.transpose();
+  return e.dot(cycle_covariance.ldlt().solve(e));
+}
+
+TEST(Consistency, MatchesTheCycleComposedStepByStep) {
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const testing::TrueGraph t = testing::square_laps(3, 6, 4, 0.002, seed);
+    const ChainSplit split = split_chain(t.graph, "square");
+    const CycleTest test(t.graph, split);
+    ASSERT_GE(test.closures(), 8U);
+    for (std::size_t k = 0; k < test.closures(); ++k)
+      for (std::size_t l = k + 1; l < test.closures(); ++l) {
+        const double expected = brute_force_cycle(t.graph, split, k, l);
+        EXPECT_NEAR(test.squared_distance(k, l), expected, 0.005 * expected + 1e-9)
+            << "closures " << k << " and " << l << ", seed " << seed;
+      }
+  }
+}
+
+TEST(Consistency, GraphHoldsExactlyThePairsBelowTheThresholdOnEveryBackend) {
+  testing::TrueGraph t = testing::square_laps(4, 5, 2, 0.02, 9);
+  aco::Rng rng(5);
+  for (int f = 0; f < 6; ++f)  // false closures: random vertices, measurement near identity
+    t.graph.edges.push_back({rng.below(40), 40 + rng.below(40), Pose2{0.1, -0.1, 0.05},
+                             100.0 * Eigen::Matrix3d::Identity()});
+  t.graph.edges.push_back({3, 6, Pose2{}, 100.0 * Eigen::Matrix3d::Identity()});  // fails alone
+  const ChainSplit split = split_chain(t.graph, "square");
+  const CycleTest test(t.graph, split);
+  const double threshold = chi_square3_quantile(0.99);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
+  std::vector<bool> unary;
+  for (std::uint32_t k = 0; k < test.closures(); ++k)
+    unary.push_back(test.squared_distance(k) <= threshold);
+  for (std::uint32_t k = 0; k < test.closures(); ++k)
+    for (std::uint32_t l = k + 1; l < test.closures(); ++l)
+      if (unary[k] && unary[l] && test.squared_distance(k, l) <= threshold)
+        expected.emplace_back(k, l);
+  ASSERT_GT(expected.size(), 10U);
+  ASSERT_LT(expected.size(), test.closures() * (test.closures() - 1) / 2);  // some fail
+  ASSERT_FALSE(unary.back());
+  using aco::BackendKind;
+  for (const auto& [backend, threads] : {std::pair{BackendKind::serial, std::size_t{1}},
+                                         {BackendKind::tbb, 2},
+                                         {BackendKind::omp, 3}}) {
+    const ConsistencyGraph graph = pairwise_consistency(t.graph, split, {0.99, backend, threads});
+    EXPECT_EQ(graph.closures, test.closures());
+    EXPECT_EQ(graph.threshold, threshold);
+    EXPECT_EQ(graph.pairs, expected);
+    EXPECT_EQ(graph.odometry_consistent, unary);
+  }
+  EXPECT_THROW(pairwise_consistency(t.graph, split, {1.5}), std::invalid_argument);
+}
+
+TEST(Consistency, AFragmentSetGivesTheSameGraphAsItsPoseGraph) {
+  testing::TrueGraph t = testing::square_laps(4, 5, 2, 0.05, 4);
+  aco::Rng rng(8);
+  for (int f = 0; f < 6; ++f)
+    t.graph.edges.push_back({rng.below(40), 40 + rng.below(40), Pose2{0.1, -0.1, 0.05},
+                             100.0 * Eigen::Matrix3d::Identity()});
+  const FragmentSet set = fragment_set_from_g2o(t.graph, {.samples = 1}, "square");
+  const ConsistencyGraph from_set = pairwise_consistency(set);
+  const ConsistencyGraph from_graph = pairwise_consistency(t.graph, split_chain(t.graph, "square"));
+  EXPECT_EQ(from_set.closures, set.closures.size());
+  EXPECT_EQ(from_set.pairs, from_graph.pairs);
+  EXPECT_EQ(from_set.odometry_consistent, from_graph.odometry_consistent);
+  EXPECT_LT(from_set.pairs.size(), from_set.closures * (from_set.closures - 1) / 2);
+}
+
+TEST(Consistency, NoiseFreeClosuresAreAllConsistent) {
+  const testing::TrueGraph t = testing::square_laps(3, 5, 1, 0.0, 1);
+  const ChainSplit split = split_chain(t.graph, "square");
+  const ConsistencyGraph graph = pairwise_consistency(t.graph, split);
+  const std::size_t m = split.closures.size();
+  EXPECT_EQ(graph.pairs.size(), m * (m - 1) / 2);
+}
+
+}  // namespace
+}  // namespace antslam::slam

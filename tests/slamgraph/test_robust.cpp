@@ -1,0 +1,166 @@
+// The robust back ends on square laps with false closures: the losses Ceres gets, the PCM
+// methods, GNC and DCS against the truth, least squares failing, acceptance scores, and the
+// bit-identical pcm-aco result on every backend.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pose_graphs.hpp"
+#include "slamgraph/ceres_baseline.hpp"
+#include "slamgraph/outliers.hpp"
+#include "slamgraph/robust.hpp"
+#include "support.hpp"
+
+namespace antslam::slam {
+namespace {
+
+/// Largest distance between estimated and true positions after fixing vertex 0 (both start there).
+double max_position_error(const std::vector<Pose2>& estimate, const std::vector<Pose2>& truth) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < truth.size(); ++i)
+    worst = std::max(worst, (estimate[i].translation() - truth[i].translation()).norm());
+  return worst;
+}
+
+struct Spoiled {
+  testing::TrueGraph truth;
+  SpoiledGraph spoiled;
+  std::vector<bool> outlier;  // per closure of the spoiled graph
+};
+
+/// Three laps of a 10 m square, closures every 2nd pose, stated deviations about 0.1 m and
+/// 0.02 rad (information of the order of the false closures' 42.7), noise at 0.3 of them; 25
+/// false closures of `kind`, less those that join two passes of the same place (v2 - v1 a
+/// multiple of the lap): with a measurement near the identity, those are true closures.
+Spoiled spoiled(OutlierKind kind, std::uint64_t seed) {
+  constexpr std::size_t kLap = 40;
+  Spoiled s{testing::square_laps(3, kLap / 4, 2, 0.1, seed, 0.3), {}, {}};
+  const SpoiledGraph all =
+      add_outliers(s.truth.graph, {.count = 25, .kind = kind, .group_size = 5, .seed = seed});
+  s.spoiled.graph = s.truth.graph;
+  std::size_t own = split_chain(s.truth.graph, "t").closures.size();
+  s.outlier.assign(own, false);
+  for (std::size_t k = 0; k < all.outliers.size(); ++k) {
+    const auto [v1, v2] = all.outliers[k];
+    if ((v2 - v1) % kLap == 0) continue;
+    s.spoiled.graph.edges.push_back(all.graph.edges[s.truth.graph.edges.size() + k]);
+    s.spoiled.outliers.push_back(all.outliers[k]);
+    s.outlier.push_back(true);
+  }
+  return s;
+}
+
+TEST(PoseGraphCeres, DcsAndWeightedLossesAsDocumented) {
+  // One edge between two vertices and one odometry edge: losses only change the weighting, so
+  // check the solution against the closed form of two weighted measurements of one pose.
+  PoseGraph g;
+  g.vertices = {Pose2{}, Pose2{}};
+  g.edges = {{0, 1, Pose2{1.0, 0.0, 0.0}, Eigen::Matrix3d::Identity()},
+             {1, 0, Pose2{-2.0, 0.0, 0.0}, Eigen::Matrix3d::Identity()}};  // says x1 = 2
+  const auto x1 = [&](EdgeLoss second) {
+    const std::vector<EdgeLoss> losses{EdgeLoss{}, second};
+    return optimize_pose_graph(g, g.vertices, losses, {}).frames[1].x;
+  };
+  EXPECT_NEAR(x1({}), 1.5, 1e-8);                                // least squares
+  EXPECT_NEAR(x1({EdgeLoss::Kind::weighted, 3.0}), 1.75, 1e-8);  // (1 + 3 * 2) / 4
+  EXPECT_NEAR(x1({EdgeLoss::Kind::weighted, 0.0}), 1.0, 1e-8);   // left out
+  // DCS with Phi = 100: both residuals are small (s <= Phi), so least squares.
+  EXPECT_NEAR(x1({EdgeLoss::Kind::dcs, 100.0}), 1.5, 1e-8);
+  // DCS with Phi = 0.01: the stationary point of s1 + rho(s2) with rho'(s2) = (2 Phi /
+  // (Phi + s2))^2, s1 = (x - 1)^2, s2 = (x - 2)^2: (x - 1) + rho'(s2) (x - 2) = 0.
+  const double x = x1({EdgeLoss::Kind::dcs, 0.01});
+  const double s2 = (x - 2.0) * (x - 2.0), w = std::pow(0.02 / (0.01 + s2), 2.0);
+  EXPECT_NEAR((x - 1.0) + w * (x - 2.0), 0.0, 1e-8);
+  EXPECT_LT(x, 1.01);
+  const std::vector<double> chi2 = edge_chi2(g, std::vector<Pose2>{Pose2{}, Pose2{1.5, 0, 0}});
+  EXPECT_NEAR(chi2[0], 0.25, 1e-12);
+  EXPECT_NEAR(chi2[1], 0.25, 1e-12);  // inverted to first order: exact for a pure translation
+}
+
+TEST(Robust, PcmMethodsKeepTheTrueClosuresAndDropTheFalseOnes) {
+  for (const OutlierKind kind : {OutlierKind::random, OutlierKind::local_group}) {
+    const Spoiled s = spoiled(kind, 3);
+    for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
+      const RobustResult r = solve_robust(s.spoiled.graph, method, {}, "spoiled");
+      const AcceptanceScores sc = score_acceptance(r.accepted, s.outlier);
+      EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method) << " " << to_string(kind);
+      EXPECT_EQ(*sc.recall, 1.0) << to_string(method);
+      ASSERT_TRUE(r.clique);
+      EXPECT_TRUE(r.clique->clique.optimal);
+      EXPECT_LT(max_position_error(r.poses, s.truth.truth), 0.3);
+    }
+  }
+}
+
+TEST(Robust, LeastSquaresBendsGncAndDcsRecover) {
+  const Spoiled s = spoiled(OutlierKind::random, 5);
+  const RobustResult ls = solve_robust(s.spoiled.graph, RobustMethod::ls, {}, "spoiled");
+  EXPECT_GT(max_position_error(ls.poses, s.truth.truth), 2.0);
+  EXPECT_EQ(std::count(ls.accepted.begin(), ls.accepted.end(), true),
+            static_cast<std::ptrdiff_t>(ls.accepted.size()));
+  for (const RobustMethod method : {RobustMethod::gnc, RobustMethod::dcs}) {
+    const RobustResult r = solve_robust(s.spoiled.graph, method, {}, "spoiled");
+    const AcceptanceScores sc = score_acceptance(r.accepted, s.outlier);
+    EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method);
+    EXPECT_GE(*sc.recall, 0.95) << to_string(method);
+    EXPECT_LT(max_position_error(r.poses, s.truth.truth), 0.3) << to_string(method);
+  }
+}
+
+TEST(Robust, PcmAcoIsBitIdenticalOnEveryBackend) {
+  const Spoiled s = spoiled(OutlierKind::random_group, 7);
+  RobustSettings settings;
+  const RobustResult serial = solve_robust(s.spoiled.graph, RobustMethod::pcm_aco, settings, "s");
+  for (const auto& [backend, threads] :
+       {std::pair{aco::BackendKind::tbb, std::size_t{2}}, {aco::BackendKind::omp, 3}}) {
+    settings.backend = backend;
+    settings.threads = threads;
+    const RobustResult r = solve_robust(s.spoiled.graph, RobustMethod::pcm_aco, settings, "s");
+    EXPECT_EQ(r.accepted, serial.accepted);
+    EXPECT_EQ(r.clique->clique.vertices, serial.clique->clique.vertices);
+    EXPECT_EQ(r.clique->work, serial.clique->work);
+    for (std::size_t i = 0; i < r.poses.size(); ++i) EXPECT_EQ(r.poses[i].x, serial.poses[i].x);
+  }
+}
+
+TEST(Robust, KeptGraphHoldsOdometryAndTheAcceptedClosures) {
+  const Spoiled s = spoiled(OutlierKind::local, 2);
+  const RobustResult r = solve_robust(s.spoiled.graph, RobustMethod::pcm_exact, {}, "s");
+  const PoseGraph kept = kept_graph(s.spoiled.graph, r);
+  const auto accepted =
+      static_cast<std::size_t>(std::count(r.accepted.begin(), r.accepted.end(), true));
+  EXPECT_EQ(kept.edges.size(), s.spoiled.graph.vertices.size() - 1 + accepted);
+  EXPECT_EQ(kept.vertices.size(), r.poses.size());
+  EXPECT_EQ(kept.vertices[7].x, r.poses[7].x);
+}
+
+TEST(Robust, AcceptanceScoresByHand) {
+  const std::vector<bool> accepted{true, true, false, true, false};
+  const std::vector<bool> outlier{false, true, false, false, true};
+  const AcceptanceScores s = score_acceptance(accepted, outlier);
+  EXPECT_EQ(s.accepted, 3U);
+  EXPECT_EQ(s.accepted_outliers, 1U);
+  EXPECT_DOUBLE_EQ(*s.precision, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(*s.recall, 2.0 / 3.0);
+  const AcceptanceScores none = score_acceptance({false, false}, {true, true});
+  EXPECT_FALSE(none.precision);
+  EXPECT_FALSE(none.recall);
+  EXPECT_THROW(score_acceptance({true}, {}), std::invalid_argument);
+}
+
+TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
+  for (const RobustMethodInfo& m : kRobustMethods) EXPECT_EQ(parse_robust_method(m.name), m.value);
+  EXPECT_FALSE(parse_robust_method("bogus"));
+  const testing::TrueGraph t = testing::square_laps(2, 5, 5, 0.01, 1);
+  RobustSettings s;
+  s.gnc.mu_factor = 1.0;
+  EXPECT_THROW(solve_robust(t.graph, RobustMethod::gnc, s, "t"), std::invalid_argument);
+  s = {};
+  s.inlier_confidence = 1.0;
+  EXPECT_THROW(solve_robust(t.graph, RobustMethod::ls, s, "t"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace antslam::slam
