@@ -16,6 +16,14 @@ std::string plain_message(const nlohmann::json::exception& e) {
   return what;
 }
 
+/// A key as JSON writes it, without the quotes: control characters escaped (a key may hold
+/// "\n"), so that a message naming it stays one line.
+std::string printable_key(const std::string& key) {
+  const std::string quoted =
+      nlohmann::json(key).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return quoted.substr(1, quoted.size() - 2);
+}
+
 }  // namespace
 
 nlohmann::json parse_json(std::string_view text, const std::string& source) {
@@ -53,7 +61,7 @@ void JsonField::only(std::initializer_list<const char*> allowed) const {
   for (const auto& [key, unused] : value_->items()) {
     bool known = false;
     for (const char* a : allowed) known |= key == a;
-    if (!known) fail("unknown field '" + key + "'");
+    if (!known) fail("unknown field '" + printable_key(key) + "'");
   }
 }
 

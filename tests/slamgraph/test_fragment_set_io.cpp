@@ -116,6 +116,10 @@ TEST(FragmentSetIo, RejectsMalformedInputWithOneClearLine) {
             "set.json: fragments[1].alignment.covariance: expected 3 elements, got 1");
   EXPECT_EQ(error_of(document(R"({"exit": [0, 0, 0], "sampels": []})")),
             "set.json: fragments[1]: unknown field 'sampels'");
+  // Found by fuzzing (docs/fuzzing.md): a key with an escaped line break is named as JSON
+  // writes it, so the message stays one line.
+  EXPECT_EQ(error_of(document(R"({"exit": [0, 0, 0], "covari\nce": []})")),
+            "set.json: fragments[1]: unknown field 'covari\\nce'");
   EXPECT_EQ(error_of(document("", R"({"from": 0, "to": 2, "anchor": [0, 0, 0],
                               "hypothesis": {"mean": [1, 0, 0], )" +
                                       cov + "}}")),
