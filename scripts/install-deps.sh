@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev zlib1g-dev libpng-dev
   python3-matplotlib
+  python3-dev python3-numpy python3-pytest pybind11-dev python3-pybind11  # import antslam
   r-cran-irace  # the irace scenario test (tests/scripts)
   clang libomp-14-dev libclang-rt-14-dev
 )

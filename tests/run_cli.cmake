@@ -2,8 +2,8 @@
 #   EXPECT=error : non-zero exit and stderr matching STDERR_REGEX; with ONE_LINE, stderr is
 #                  exactly one line "antslam: error: ..."; with ABSENT=a,b,..., none of those
 #                  files exists afterwards (they are removed first: nothing was written)
-#   EXPECT=ok    : exit 0, stdout matching STDOUT_REGEX, and if FILE is set, FILE matching
-#                  FILE_REGEX; with SAME=a,b[,c,d...], file a byte-identical to b (c to d, ...)
+#   EXPECT=ok    : exit 0, stdout matching STDOUT_REGEX (and not STDOUT_NOT_REGEX, if set), and
+#                  if FILE is set, FILE matching FILE_REGEX; with SAME=a,b[,c,d...], file a byte-identical to b (c to d, ...)
 string(REPLACE "|" ";" args "${ARGS}")
 if(FILE)
   file(REMOVE "${FILE}")
@@ -35,6 +35,9 @@ else()
   endif()
   if(NOT out MATCHES "${STDOUT_REGEX}")
     message(FATAL_ERROR "stdout does not match '${STDOUT_REGEX}':\n${out}")
+  endif()
+  if(STDOUT_NOT_REGEX AND out MATCHES "${STDOUT_NOT_REGEX}")
+    message(FATAL_ERROR "stdout matches '${STDOUT_NOT_REGEX}':\n${out}")
   endif()
   if(FILE)
     file(READ "${FILE}" content)

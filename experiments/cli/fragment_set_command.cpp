@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "frontend/laser_log.hpp"
 #include "frontend_options.hpp"
+#include "output_options.hpp"
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/trajectory.hpp"
@@ -67,14 +68,17 @@ void add_fragment_set_command(CLI::App& app) {
       "Frontend of a CARMEN log written as a fragment set (with each fragment's scan poses) for "
       "`antslam optimize`");
   cmd->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
-  cmd->add_option("-o,--out", o.out, "fragment-set JSON to write")->required();
+  add_output_option(*cmd, o.out, "fragment-set JSON to write (required)", {"--out"});
   cmd->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
       ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_option("--trajectory", o.trajectory,
                   "also write the scan matcher's trajectory (TUM): the pre-solution baseline");
   add_frontend_options(*cmd, o.frontend);
-  cmd->callback([options] { run(*options); });
+  cmd->callback([options] {
+    require_output(!options->out.empty(), "--output");
+    run(*options);
+  });
 }
 
 }  // namespace antslam::cli

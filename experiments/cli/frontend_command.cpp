@@ -1,4 +1,4 @@
-// antslam frontend LOG --out DIR: the laser frontend on a CARMEN log (paper Sec. III-A). Writes
+// antslam frontend LOG --out-dir DIR: the laser frontend on a CARMEN log (paper Sec. III-A). Writes
 // the scan-matcher trajectory (TUM), the scan-matcher map (PNG, every second fragment tinted as
 // in the paper's Fig. 4) and a JSON report of fragments, closures and times.
 
@@ -21,6 +21,7 @@
 #include "frontend/map_render.hpp"
 #include "frontend/report.hpp"
 #include "frontend_options.hpp"
+#include "output_options.hpp"
 #include "slamgraph/fragment_set.hpp"
 #include "slamgraph/trajectory.hpp"
 #include "validators.hpp"
@@ -118,7 +119,7 @@ void add_frontend_command(CLI::App& app) {
                          "Scan matching, fragments and loop closures of a CARMEN laser log (paper "
                          "Sec. III-A); writes trajectory.tum, map.png and report.json");
   sub->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
-  sub->add_option("--out", o.out, "output directory")->required();
+  add_out_dir_option(*sub, o.out, "output directory (required)");
   sub->add_option("--seed", o.frontend.settings.fragmentation.seed, "seed of the samples")
       ->check(non_negative_integer())
       ->capture_default_str();
@@ -128,7 +129,10 @@ void add_frontend_command(CLI::App& app) {
                   "also write map-samples.png: the average map of this many random sample "
                   "sequences (eqs. 7-8)")
       ->check(count_in(0, kMaxAverageSamples));
-  sub->callback([options] { run(*options); });
+  sub->callback([options] {
+    require_output(!options->out.empty(), "--out-dir");
+    run(*options);
+  });
 }
 
 }  // namespace antslam::cli

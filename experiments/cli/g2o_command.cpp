@@ -1,12 +1,11 @@
-// antslam g2o: a g2o pose graph (VERTEX_SE2 / EDGE_SE2) as a fragment set (slamgraph/g2o.hpp).
+// antslam g2o: a 2D pose graph (g2o or TORO lines, slamgraph/g2o.hpp) as a fragment set, or as a
+// pose graph in the other format.
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "cli/errors.hpp"
 #include "cli/memory.hpp"
@@ -31,18 +30,19 @@ void run(const G2oOptions& o) {
   OutputFiles outputs;
   outputs.add(o.output);
   const slam::PoseGraph graph = slam::read_g2o_file(o.input);
-  std::vector<slam::Pose2> reference;
-  if (!o.reference.empty()) reference = slam::read_reference_poses(o.reference);
+  if (slam::is_pose_graph_file(o.output)) {
+    outputs.write(o.output,
+                  [&](std::ostream& out) { slam::write_pose_graph(out, graph, o.output); });
+    outputs.commit();
+    std::printf("wrote %s: %zu vertices%s, %zu edges\n", o.output.c_str(), graph.vertices.size(),
+                graph.vertices_from_file ? "" : " (composed along the edges)", graph.edges.size());
+    return;
+  }
   require_memory("-m " + std::to_string(o.import.samples) + " (the samples)",
                  slam::fragment_set_bytes(graph.vertices.size(), o.import.samples, 0));
   slam::FragmentSet set =
       in_context_of(o.input, [&] { return slam::fragment_set_from_g2o(graph, o.import, o.input); });
-  if (!o.reference.empty()) {
-    set.reference = std::move(reference);
-    if (set.reference.size() != set.fragments.size())
-      throw std::runtime_error(o.reference + ": has " + std::to_string(set.reference.size()) +
-                               " poses, the graph " + std::to_string(set.fragments.size()));
-  }
+  set.reference = slam::reference_poses(set.fragments.size(), {}, o.reference);
   in_context_of(o.input, [&] { slam::validate(set); });
   outputs.write(o.output, [&](std::ostream& out) { slam::write_fragment_set(out, set); });
   outputs.commit();
@@ -55,9 +55,14 @@ void run(const G2oOptions& o) {
 
 void add_g2o_command(CLI::App& app) {
   auto o = std::make_shared<G2oOptions>();
-  CLI::App* cmd = app.add_subcommand("g2o", "Convert a g2o 2D pose graph into a fragment set");
-  cmd->add_option("input", o->input, "g2o file (VERTEX_SE2, EDGE_SE2)")->required();
-  cmd->add_option("-o,--output", o->output, "fragment-set JSON to write")->required();
+  CLI::App* cmd = app.add_subcommand(
+      "g2o", "Convert a 2D pose graph (g2o or TORO) into a fragment set, or into the other format");
+  cmd->add_option("input", o->input, "pose graph (VERTEX_SE2/EDGE_SE2/FIX or VERTEX2/EDGE2)")
+      ->required();
+  cmd->add_option("-o,--output", o->output,
+                  "fragment-set JSON to write; a .g2o or .graph (TORO) name writes the pose graph "
+                  "in that format")
+      ->required();
   cmd->add_option("-m,--samples", o->import.samples, "samples drawn per alignment (eq. 7)")
       ->check(count_in(1, kMaxSamples))
       ->capture_default_str();
@@ -65,7 +70,8 @@ void add_g2o_command(CLI::App& app) {
       ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
-                  "ground-truth poses stored with the set (.g2o, .tum or `x y theta` lines)");
+                  "ground-truth poses stored with the set (.g2o, .graph, .tum or `x y theta` "
+                  "lines)");
   cmd->callback([o] { run(*o); });
 }
 

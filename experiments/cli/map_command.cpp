@@ -1,5 +1,5 @@
-// antslam map LOG --out DIR: the whole AntSLAM pipeline on a CARMEN laser log (paper Secs. III-IV,
-// mapping::run_pipeline). Writes the fragment set, the corrected and the scan-matcher
+// antslam map LOG --out-dir DIR: the whole AntSLAM pipeline on a CARMEN laser log (paper Secs.
+// III-IV, mapping::run_pipeline). Writes the fragment set, the corrected and the scan-matcher
 // trajectories (TUM, every scan), the scan-matcher map (Fig. 5a), the optimized map, the average
 // map of the trials (Fig. 5b) and a JSON report; prints every closure's Mahalanobis distance
 // before and after.
@@ -23,6 +23,7 @@
 #include "mapping/pipeline.hpp"
 #include "mapping/report.hpp"
 #include "optimizer_options.hpp"
+#include "output_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "validators.hpp"
 
@@ -157,7 +158,7 @@ void add_map_command(CLI::App& app) {
       "The whole AntSLAM pipeline on a CARMEN laser log: frontend, fragment set, optimisation, "
       "corrected trajectory, maps and a JSON report");
   sub->add_option("log", o.log, "CARMEN log (.clf/.log, may be gzipped)")->required();
-  sub->add_option("--out", o.out, "output directory")->required();
+  add_out_dir_option(*sub, o.out, "output directory (required)");
   sub->add_option("--trials", o.mapping.trials,
                   "optimizer trials; the lowest weight is the map, all of them the average map")
       ->check(count_in(1, kMaxTrials))
@@ -190,7 +191,10 @@ void add_map_command(CLI::App& app) {
   add_optimizer_options(*sub, o.optimizer);
   add_frontend_options(*sub, o.frontend);
   add_map_options(*sub, o.frontend);
-  sub->callback([options] { run(*options); });
+  sub->callback([options] {
+    require_output(!options->out.empty(), "--out-dir");
+    run(*options);
+  });
 }
 
 }  // namespace antslam::cli

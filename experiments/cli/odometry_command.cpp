@@ -1,4 +1,4 @@
-// antslam odometry LOG --out FILE: the odometry-only baseline. The robot poses a CARMEN log's
+// antslam odometry LOG -o FILE: the odometry-only baseline. The robot poses a CARMEN log's
 // scans carry (the FLASER odom fields, ROBOTLASER1's robot pose) as a TUM trajectory.
 
 #include <CLI/CLI.hpp>
@@ -11,6 +11,7 @@
 #include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "frontend/laser_log.hpp"
+#include "output_options.hpp"
 #include "slamgraph/trajectory.hpp"
 
 namespace antslam::cli {
@@ -42,8 +43,11 @@ void add_odometry_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "odometry", "Write the odometry of a CARMEN log's scans as a TUM trajectory (baseline)");
   cmd->add_option("log", options->log, "CARMEN log (.clf/.log, may be gzipped)")->required();
-  cmd->add_option("-o,--out", options->out, "TUM trajectory to write")->required();
-  cmd->callback([options] { run(*options); });
+  add_output_option(*cmd, options->out, "TUM trajectory to write (required)", {"--out"});
+  cmd->callback([options] {
+    require_output(!options->out.empty(), "--output");
+    run(*options);
+  });
 }
 
 }  // namespace antslam::cli

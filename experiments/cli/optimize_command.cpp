@@ -1,4 +1,4 @@
-// antslam optimize: run one optimizer variant on a fragment set (or a g2o pose graph), many
+// antslam optimize: run one optimizer variant on a fragment set or a pose graph (g2o, TORO), many
 // trials in parallel; write the result JSON, a per-trial CSV and a convergence CSV.
 
 #include <CLI/CLI.hpp>
@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -20,6 +22,7 @@
 #include "optimizer_options.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
+#include "slamgraph/graph_optimize.hpp"
 #include "slamgraph/result_io.hpp"
 #include "slamgraph/trials.hpp"
 #include "validators.hpp"
@@ -41,31 +44,79 @@ struct OptimizeOptions {
   slam::OptimizeSettings s;  ///< resolved from `optimizer`
 };
 
-std::vector<slam::OptimizeResult> run_study(const slam::FragmentSet& set,
-                                            const OptimizeOptions& o) {
-  Progress progress;
-  return slam::run_trials(
-      set, o.s, {o.trials, o.threads, o.s.backend},
-      [&](std::size_t done) {
-        if (o.trials > 1)
-          progress.update(
-              "trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
-              done == o.trials);
-      },
-      [&](const slam::ConvergencePoint& p) {
-        char line[128];
-        std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
-                      static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
-        progress.update(line);
-      });
+/// What a study ran on: a fragment set, or a pose graph (read as it is).
+struct Subject {
+  std::optional<slam::FragmentSet> set;
+  std::optional<slam::PoseGraph> graph;
+  std::vector<slam::Pose2> reference;  ///< per fragment or vertex; empty if none
+
+  std::size_t poses() const { return graph ? graph->vertices.size() : set->fragments.size(); }
+  std::string size_text() const {
+    if (graph)
+      return "N = " + std::to_string(graph->vertices.size()) + " vertices, " +
+             std::to_string(graph->edges.size()) + " edges" +
+             (graph->vertices_from_file ? "" : ", poses composed along the edges");
+    return "N = " + std::to_string(set->fragments.size()) + ", " +
+           std::to_string(set->closures.size()) +
+           (set->closures.size() == 1 ? " closure" : " closures");
+  }
+  /// The map of the given frames as a pose graph: the graph's own edges, or the set's.
+  slam::PoseGraph map_graph(std::span<const slam::Pose2> frames) const {
+    if (!graph) return slam::pose_graph_of(*set, frames);
+    slam::PoseGraph map = *graph;
+    map.vertices.assign(frames.begin(), frames.end());
+    return map;
+  }
+  slam::Trajectory trajectory(std::span<const slam::Pose2> frames) const {
+    if (set) return slam::world_trajectory(*set, frames);
+    slam::Trajectory t;
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      t.push_back({static_cast<double>(i), frames[i]});
+    return t;
+  }
+};
+
+/// The input as it is (without its reference): a fragment-set JSON, or a pose graph whose
+/// fragment chain, if the method needs one, is refused up front when its -m samples would not
+/// fit in memory.
+Subject read_subject(const OptimizeOptions& o) {
+  Subject subject;
+  if (!slam::is_pose_graph_file(o.input)) {
+    subject.set = slam::read_fragment_set_file(o.input);
+    return subject;
+  }
+  subject.graph = slam::read_g2o_file(o.input);
+  if (slam::needs_fragment_chain(o.s.method))
+    require_memory("-m " + std::to_string(o.import.samples) + " (the samples)",
+                   slam::fragment_set_bytes(subject.graph->vertices.size(), o.import.samples, 0));
+  return subject;
 }
 
-void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
-                   const OptimizeOptions& o) {
-  std::printf("%s on %s (N = %zu, %zu closure%s): %zu trial%s on %zu thread%s\n",
-              std::string(slam::to_string(r.method)).c_str(), o.input.c_str(), set.fragments.size(),
-              set.closures.size(), set.closures.size() == 1 ? "" : "s", r.trials,
-              r.trials == 1 ? "" : "s", o.threads, o.threads == 1 ? "" : "s");
+/// The trials, with their progress on a terminal (cleared before the summary).
+std::vector<slam::OptimizeResult> run_study(const Subject& subject, const OptimizeOptions& o) {
+  Progress progress;
+  const slam::TrialsObserver finished = [&](std::size_t done) {
+    if (o.trials > 1)
+      progress.update("trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
+                      done == o.trials);
+  };
+  const slam::OptimizeObserver convergence = [&](const slam::ConvergencePoint& p) {
+    char line[128];
+    std::snprintf(line, sizeof line, "iteration %llu  best weight %.6f  %.2f s",
+                  static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
+    progress.update(line);
+  };
+  const slam::TrialSettings trials{o.trials, o.threads, o.s.backend};
+  if (subject.graph)
+    return slam::run_trials(*subject.graph, o.input, o.s, o.import, trials, finished, convergence);
+  return slam::run_trials(*subject.set, o.s, trials, finished, convergence);
+}
+
+void print_summary(const slam::StudyResult& r, const Subject& subject, const OptimizeOptions& o) {
+  std::printf("%s on %s (%s): %zu trial%s on %zu thread%s\n",
+              std::string(slam::to_string(r.method)).c_str(), o.input.c_str(),
+              subject.size_text().c_str(), r.trials, r.trials == 1 ? "" : "s", o.threads,
+              o.threads == 1 ? "" : "s");
   std::printf("  weight (eq. 10)  %.6f +- %.6f  (best %.6f, worst %.6f)\n", r.weight.mean,
               r.weight.std, r.weight.min, r.weight.max);
   std::printf("  chi2             %.6g +- %.6g  (best trial %.6g)\n", r.chi2.mean, r.chi2.std,
@@ -75,17 +126,6 @@ void print_summary(const slam::StudyResult& r, const slam::FragmentSet& set,
   if (r.error)
     std::printf("  error vs reference (best trial)  ATE %.4f m rms, %.4f m max, %.3f deg rms\n",
                 r.error->rmse_m, r.error->max_m, r.error->rmse_deg);
-}
-
-/// The fragment set of the input: a fragment-set JSON, or a g2o pose graph with -m samples per
-/// alignment (refused up front if they would not fit in memory).
-slam::FragmentSet read_input(const OptimizeOptions& o) {
-  if (std::filesystem::path(o.input).extension() != ".g2o")
-    return slam::read_fragment_set_file(o.input);
-  const slam::PoseGraph graph = slam::read_g2o_file(o.input);
-  require_memory("-m " + std::to_string(o.import.samples) + " (the samples)",
-                 slam::fragment_set_bytes(graph.vertices.size(), o.import.samples, 0));
-  return slam::fragment_set_from_g2o(graph, o.import, o.input);
 }
 
 void run(const OptimizeOptions& options) {
@@ -104,14 +144,16 @@ void run(const OptimizeOptions& options) {
   if (!o.g2o_out.empty()) outputs.add(o.g2o_out);
   if (!o.tum_out.empty()) outputs.add(o.tum_out);
 
-  const slam::FragmentSet set = in_context_of(o.input, [&] { return read_input(o); });
+  Subject subject = in_context_of(o.input, [&] { return read_subject(o); });
+  subject.reference = subject.graph
+                          ? slam::reference_poses(subject.graph->vertices.size(), {}, o.reference)
+                          : slam::reference_frames(*subject.set, o.reference);
   require_memory("--trials " + std::to_string(o.trials) + " (the trials' results)",
-                 static_cast<double>(o.trials) * slam::trial_result_bytes(set));
-  const std::vector<slam::Pose2> reference = slam::reference_frames(set, o.reference);
+                 static_cast<double>(o.trials) * slam::trial_result_bytes(subject.poses()));
   const std::vector<slam::OptimizeResult> trials =
-      in_context_of(o.input, [&] { return run_study(set, o); });
+      in_context_of(o.input, [&] { return run_study(subject, o); });
   slam::StudyResult r = slam::summarize(o.input, o.s, trials);
-  if (!reference.empty()) r.error = eval::frames_error(r.best.frames, reference);
+  if (!subject.reference.empty()) r.error = eval::frames_error(r.best.frames, subject.reference);
 
   outputs.write(result_json, [&](std::ostream& out) { slam::write_result(out, r); });
   outputs.write(trials_csv,
@@ -121,15 +163,15 @@ void run(const OptimizeOptions& options) {
   outputs.write(times_json, [&](std::ostream& out) { slam::write_times_json(out, trials); });
   if (!o.g2o_out.empty())
     outputs.write(o.g2o_out, [&](std::ostream& out) {
-      slam::write_g2o(out, slam::pose_graph_of(set, r.best.frames));
+      slam::write_pose_graph(out, subject.map_graph(r.best.frames), o.g2o_out);
     });
   if (!o.tum_out.empty())
     outputs.write(o.tum_out, [&](std::ostream& out) {
-      slam::write_tum(out, slam::world_trajectory(set, r.best.frames));
+      slam::write_tum(out, subject.trajectory(r.best.frames));
     });
   outputs.commit();
 
-  print_summary(r, set, o);
+  print_summary(r, subject, o);
   std::printf("wrote %s.json, %s.trials.csv, %s.convergence.csv, %s.times.json\n", prefix.c_str(),
               prefix.c_str(), prefix.c_str(), prefix.c_str());
   if (!o.g2o_out.empty()) std::printf("wrote %s\n", o.g2o_out.c_str());
@@ -141,7 +183,11 @@ void run(const OptimizeOptions& options) {
 void add_optimize_command(CLI::App& app) {
   auto o = std::make_shared<OptimizeOptions>();
   CLI::App* cmd = app.add_subcommand("optimize", "Run an optimizer on a fragment set");
-  cmd->add_option("input", o->input, "fragment-set JSON or g2o pose graph (.g2o)")->required();
+  cmd->add_option(
+         "input", o->input,
+         "fragment-set JSON, or a pose graph (.g2o, .graph): ceres, ceres-robust and nlopt "
+         "run on the graph from its vertex poses, the other methods on its fragment chain")
+      ->required();
   cmd->add_option("--trials", o->trials, "independent trials (trial t: seed mix(seed, t))")
       ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
@@ -150,16 +196,19 @@ void add_optimize_command(CLI::App& app) {
       ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   add_optimizer_options(*cmd, o->optimizer);
-  cmd->add_option("-m,--samples", o->import.samples, "g2o input: samples drawn per alignment")
+  cmd->add_option("-m,--samples", o->import.samples,
+                  "pose graph input: samples drawn per alignment")
       ->check(count_in(1, kMaxSamples))
       ->capture_default_str();
   cmd->add_option("--reference", o->reference,
-                  "ground-truth poses (.g2o, .tum, `x y theta` lines) for the trajectory error");
+                  "ground-truth poses (.g2o, .graph, .tum, `x y theta` lines) for the trajectory "
+                  "error");
   cmd->add_option("-o,--output", o->output,
                   "output prefix (default: <input stem>.<method>): PREFIX.json, "
                   "PREFIX.trials.csv, PREFIX.convergence.csv (the same for a seed on any thread "
                   "count or backend), PREFIX.times.json (wall-clock times)");
-  cmd->add_option("--g2o-out", o->g2o_out, "write the best map as a g2o pose graph");
+  cmd->add_option("--g2o-out", o->g2o_out,
+                  "write the best map as a pose graph (a .graph name: TORO lines)");
   cmd->add_option("--tum-out", o->tum_out, "write the best map's trajectory in TUM format");
   cmd->callback([o] {
     o->import.seed = o->optimizer.settings.seed;

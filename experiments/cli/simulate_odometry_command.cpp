@@ -1,4 +1,4 @@
-// antslam simulate-odometry LOG --out DIR: turns a corrected log (pose = odom = the corrected
+// antslam simulate-odometry LOG --out-dir DIR: turns a corrected log (pose = odom = the corrected
 // pose, data/laser/corrected) into a benchmark with ground truth. The corrected poses become the
 // reference (DIR/reference.tum); odometry is derived from them and corrupted with seeded noise
 // (frontend/odometry_noise.hpp), and the scans are written with it as a raw-like log
@@ -22,6 +22,7 @@
 #include "frontend/carmen_writer.hpp"
 #include "frontend/laser_log.hpp"
 #include "frontend/odometry_benchmark.hpp"
+#include "output_options.hpp"
 #include "sensor_options.hpp"
 #include "slamgraph/trajectory.hpp"
 #include "validators.hpp"
@@ -100,7 +101,7 @@ void add_simulate_odometry_command(CLI::App& app) {
       "poses as reference (reference.tum), report.json");
   cmd->add_option("log", o.log, "corrected CARMEN log (pose = odom = corrected; may be gzipped)")
       ->required();
-  cmd->add_option("--out", o.out, "output directory")->required();
+  add_out_dir_option(*cmd, o.out, "output directory (required)");
   cmd->add_option("--seed", o.seed, "seed of the odometry noise")
       ->check(non_negative_integer())
       ->capture_default_str();
@@ -119,7 +120,10 @@ void add_simulate_odometry_command(CLI::App& app) {
       ->check(finite_in(-1e3, 1e3))
       ->capture_default_str();
   add_sensor_options(*cmd, o.sensor);
-  cmd->callback([options] { run(*options); });
+  cmd->callback([options] {
+    require_output(!options->out.empty(), "--out-dir");
+    run(*options);
+  });
 }
 
 }  // namespace antslam::cli

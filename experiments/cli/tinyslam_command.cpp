@@ -1,4 +1,4 @@
-// antslam tinyslam LOG --out DIR: the tinySLAM-style baseline (baselines/) on a
+// antslam tinyslam LOG --out-dir DIR: the tinySLAM-style baseline (baselines/) on a
 // CARMEN log. Writes DIR/trajectory.tum (a pose for every scan), DIR/map.png (its one map) and
 // DIR/report.json (settings, counts, times).
 
@@ -19,6 +19,7 @@
 #include "commands.hpp"
 #include "frontend/image.hpp"
 #include "frontend/laser_log.hpp"
+#include "output_options.hpp"
 #include "sensor_options.hpp"
 #include "slamgraph/trajectory.hpp"
 #include "validators.hpp"
@@ -93,7 +94,7 @@ void add_tinyslam_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "tinyslam", "tinySLAM-style baseline on a CARMEN log: trajectory.tum, map.png, report.json");
   cmd->add_option("log", options->log, "CARMEN log (.clf/.log, may be gzipped)")->required();
-  cmd->add_option("--out", options->out, "output directory")->required();
+  add_out_dir_option(*cmd, options->out, "output directory (required)");
   cmd->add_option("--seed", s.seed, "seed of the Monte-Carlo search")
       ->check(non_negative_integer())
       ->capture_default_str();
@@ -122,7 +123,10 @@ void add_tinyslam_command(CLI::App& app) {
       ->check(finite_in(0.0, frontend::kMaxLaserRange))
       ->capture_default_str();
   add_sensor_options(*cmd, options->sensor);
-  cmd->callback([options] { run(*options); });
+  cmd->callback([options] {
+    require_output(!options->out.empty(), "--out-dir");
+    run(*options);
+  });
 }
 
 }  // namespace antslam::cli

@@ -6,6 +6,7 @@
 
 #include "cli/output_files.hpp"
 #include "commands.hpp"
+#include "output_options.hpp"
 #include "tsp/generator.hpp"
 #include "tsp/tsplib.hpp"
 #include "validators.hpp"
@@ -51,8 +52,9 @@ void add_tsp_generate_command(CLI::App& app) {
                   "clustered: standard deviation around a centre, in units of side/sqrt(cities)")
       ->check(finite_in(1e-6, 1e6))
       ->capture_default_str();
-  sub->add_option("--out", c->out, "TSPLIB file to write")->required();
+  add_output_option(*sub, c->out, "TSPLIB file to write (required)", {"--out"});
   sub->callback([c] {
+    require_output(!c->out.empty(), "--output");
     OutputFiles outputs;
     outputs.add(c->out);
     const tsp::Instance instance =

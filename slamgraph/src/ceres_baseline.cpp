@@ -3,28 +3,11 @@
 #include <ceres/ceres.h>
 #include <glog/logging.h>
 
-#include <cmath>
 #include <stdexcept>
 
 #include "ceres_residual.hpp"
 
 namespace antslam::slam {
-
-namespace {
-
-/// rho(s) = 2 (1 - exp(-s/2)): Ceres' 1/2 rho(|U r|^2) is the term 1 - N(mu, Sigma)(.) of
-/// eq. (10).
-class WelschLoss final : public ceres::LossFunction {
- public:
-  void Evaluate(double s, double rho[3]) const override {
-    const double e = std::exp(-0.5 * s);
-    rho[0] = 2.0 * (1.0 - e);
-    rho[1] = e;
-    rho[2] = -0.5 * e;
-  }
-};
-
-}  // namespace
 
 void show_solver_logs(bool show) {
   FLAGS_minloglevel = show ? google::GLOG_INFO : google::GLOG_FATAL;
@@ -45,7 +28,7 @@ CeresResult optimize_with_ceres(const FragmentSet& set, std::span<const Pose2> i
   const auto add = [&](std::size_t a, std::size_t b, const Pose2& anchor, const Gaussian2& g) {
     problem.AddResidualBlock(
         detail::RelativePoseError::create(anchor, g.mean(), g.information_factor()),
-        robust ? new WelschLoss : nullptr, poses[a].data(), poses[b].data());
+        robust ? new detail::WelschLoss : nullptr, poses[a].data(), poses[b].data());
   };
   for (std::size_t i = 1; i < set.fragments.size(); ++i)
     add(i - 1, i, Pose2{}, *set.fragments[i].alignment);

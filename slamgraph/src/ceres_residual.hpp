@@ -52,6 +52,18 @@ class RelativePoseError {
   Eigen::Matrix3d sqrt_information_;
 };
 
+/// rho(s) = 2 (1 - exp(-s/2)): Ceres' 1/2 rho(|U r|^2) is the term 1 - N(mu, Sigma)(.) of
+/// eq. (10).
+class WelschLoss final : public ceres::LossFunction {
+ public:
+  void Evaluate(double s, double rho[3]) const override {
+    const double e = std::exp(-0.5 * s);
+    rho[0] = 2.0 * (1.0 - e);
+    rho[1] = e;
+    rho[2] = -0.5 * e;
+  }
+};
+
 /// Solves `problem` over `poses` (the first one held constant by the caller) with
 /// Levenberg-Marquardt and sparse normal Cholesky on one thread; the poses are updated in place.
 /// Throws std::runtime_error if Ceres gives no usable solution.

@@ -1,15 +1,17 @@
 #include "slamgraph/g2o.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
+#include <array>
 #include <fstream>
 #include <iomanip>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
-#include "aco/random.hpp"
-#include "slamgraph/fragment_set_io.hpp"
+#include "slamgraph/graph_structure.hpp"
 #include "text_lines.hpp"
 
 namespace antslam::slam {
@@ -17,6 +19,8 @@ namespace antslam::slam {
 namespace {
 
 using detail::fail_at;
+
+constexpr const char* kTags = "VERTEX_SE2, EDGE_SE2, VERTEX2, EDGE2 or FIX";
 
 /// The remaining fields of a line as exactly `count` finite numbers.
 std::vector<double> numbers(std::istringstream& fields, std::size_t count,
@@ -51,20 +55,79 @@ std::vector<Pose2> read_pose_lines(std::istream& in, const std::string& source) 
   return poses;
 }
 
-/// Inverse of a symmetric positive definite matrix (covariance <-> information), symmetrised.
-Eigen::Matrix3d symmetric_inverse(const Eigen::Matrix3d& m) {
-  const Eigen::LLT<Eigen::Matrix3d> llt(m);
-  Eigen::Matrix3d c = llt.solve(Eigen::Matrix3d::Identity());
-  return 0.5 * (c + c.transpose());
+/// Tags of 3D graphs (g2o's SE(3) and point types, TORO's 3D lines).
+bool is_3d_tag(std::string_view tag) {
+  return tag.find("SE3") != std::string_view::npos || tag.find("XYZ") != std::string_view::npos ||
+         tag == "VERTEX3" || tag == "EDGE3";
 }
 
-/// Jacobian of q = p * b with respect to p (b constant).
-Eigen::Matrix3d right_compose_jacobian(const Pose2& p, const Pose2& b) {
-  const Eigen::Vector2d rotated = Pose2{0.0, 0.0, p.theta} * b.translation();
-  Eigen::Matrix3d j = Eigen::Matrix3d::Identity();
-  j(0, 2) = -rotated.y();
-  j(1, 2) = rotated.x();
-  return j;
+/// An edge line after its tag; `toro` reads TORO's order of the information entries.
+PoseGraphEdge read_edge(std::istringstream& fields, bool toro, const std::string& source,
+                        std::size_t line) {
+  PoseGraphEdge e;
+  e.from = vertex_id(fields, source, line);
+  e.to = vertex_id(fields, source, line);
+  const auto v = numbers(fields, 9, source, line,
+                         toro ? "EDGE2 i j dx dy dtheta Ixx Ixy Iyy Itt Ixt Iyt"
+                              : "EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33");
+  if (e.from == e.to) fail_at(source, line, "edge from a vertex to itself");
+  e.measurement = Pose2::from_vector({v[0], v[1], v[2]});
+  // Upper-triangle entries (xx, xy, xt, yy, yt, tt) at these positions of v.
+  const std::array<int, 6> at = toro ? std::array{3, 4, 7, 5, 8, 6} : std::array{3, 4, 5, 6, 7, 8};
+  const auto w = [&](int k) {
+    return v[static_cast<std::size_t>(at[static_cast<std::size_t>(k)])];
+  };
+  e.information << w(0), w(1), w(2), w(1), w(3), w(4), w(2), w(4), w(5);
+  const Eigen::LLT<Eigen::Matrix3d> llt(e.information);
+  if (llt.info() != Eigen::Success || !(llt.matrixL().toDenseMatrix().diagonal().minCoeff() > 0.0))
+    fail_at(source, line, "information matrix is not positive definite");
+  return e;
+}
+
+/// The graph's vertex count when the file has no vertex lines: every id 0..n-1 must occur in an
+/// edge.
+std::size_t vertices_of_edges(const std::vector<std::pair<PoseGraphEdge, std::size_t>>& edges,
+                              const std::string& source) {
+  std::vector<bool> used;
+  for (const auto& [e, line] : edges) {
+    const std::size_t top = std::max(e.from, e.to);
+    if (top >= std::size_t{1} << 26)
+      fail_at(source, line,
+              "vertex id " + std::to_string(top) +
+                  " is too large for a graph "
+                  "without vertex lines (ids must be 0..n-1)");
+    if (top >= used.size()) used.resize(top + 1, false);
+    used[e.from] = used[e.to] = true;
+  }
+  const auto missing = std::find(used.begin(), used.end(), false);
+  if (missing != used.end())
+    throw std::runtime_error(source + ": no vertex lines, and vertex " +
+                             std::to_string(missing - used.begin()) +
+                             " is in no edge (ids must be 0..n-1)");
+  return used.size();
+}
+
+void write_lines(std::ostream& out, const PoseGraph& graph, bool toro) {
+  out << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for (std::size_t i = 0; i < graph.vertices.size(); ++i) {
+    const Pose2& p = graph.vertices[i];
+    out << (toro ? "VERTEX2 " : "VERTEX_SE2 ") << i << ' ' << p.x << ' ' << p.y << ' ' << p.theta
+        << '\n';
+  }
+  for (const std::size_t v : graph.fixed) out << "FIX " << v << '\n';
+  for (const PoseGraphEdge& e : graph.edges) {
+    const Pose2& z = e.measurement;
+    const Eigen::Matrix3d& w = e.information;
+    out << (toro ? "EDGE2 " : "EDGE_SE2 ") << e.from << ' ' << e.to << ' ' << z.x << ' ' << z.y
+        << ' ' << z.theta << ' ';
+    if (toro) {
+      out << w(0, 0) << ' ' << w(0, 1) << ' ' << w(1, 1) << ' ' << w(2, 2) << ' ' << w(0, 2) << ' '
+          << w(1, 2) << '\n';
+    } else {
+      out << w(0, 0) << ' ' << w(0, 1) << ' ' << w(0, 2) << ' ' << w(1, 1) << ' ' << w(1, 2) << ' '
+          << w(2, 2) << '\n';
+    }
+  }
 }
 
 }  // namespace
@@ -72,10 +135,11 @@ Eigen::Matrix3d right_compose_jacobian(const Pose2& p, const Pose2& b) {
 PoseGraph read_g2o(std::istream& in, const std::string& source) {
   std::map<std::uint64_t, std::pair<Pose2, std::size_t>> vertices;  // id -> (pose, line)
   std::vector<std::pair<PoseGraphEdge, std::size_t>> edges;         // (edge, line)
+  std::vector<std::pair<std::uint64_t, std::size_t>> fixed;         // (id, line)
   detail::for_each_data_line(in, source, [&](std::istringstream& fields, std::size_t line) {
     std::string tag;
     fields >> tag;
-    if (tag == "VERTEX_SE2") {
+    if (tag == "VERTEX_SE2" || tag == "VERTEX2") {
       const std::uint64_t id = vertex_id(fields, source, line);
       const auto v = numbers(fields, 3, source, line, "VERTEX_SE2 id x y theta");
       const auto [it, added] =
@@ -84,36 +148,44 @@ PoseGraph read_g2o(std::istream& in, const std::string& source) {
         fail_at(source, line,
                 "vertex " + std::to_string(id) + " already defined on line " +
                     std::to_string(it->second.second));
-    } else if (tag == "EDGE_SE2") {
-      PoseGraphEdge e;
-      e.from = vertex_id(fields, source, line);
-      e.to = vertex_id(fields, source, line);
-      const auto v =
-          numbers(fields, 9, source, line, "EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33");
-      if (e.from == e.to) fail_at(source, line, "edge from a vertex to itself");
-      e.measurement = Pose2::from_vector({v[0], v[1], v[2]});
-      e.information << v[3], v[4], v[5], v[4], v[6], v[7], v[5], v[7], v[8];
-      const Eigen::LLT<Eigen::Matrix3d> llt(e.information);
-      if (llt.info() != Eigen::Success ||
-          !(llt.matrixL().toDenseMatrix().diagonal().minCoeff() > 0.0))
-        fail_at(source, line, "information matrix is not positive definite");
-      edges.emplace_back(e, line);
-    } else if (tag != "FIX") {  // FIX: the first vertex is always held fixed
-      fail_at(source, line, "unsupported tag '" + tag + "' (expected VERTEX_SE2 or EDGE_SE2)");
+    } else if (tag == "EDGE_SE2" || tag == "EDGE2") {
+      edges.emplace_back(read_edge(fields, tag == "EDGE2", source, line), line);
+    } else if (tag == "FIX") {
+      do {
+        fixed.emplace_back(vertex_id(fields, source, line), line);
+      } while (!(fields >> std::ws).eof());
+    } else if (is_3d_tag(tag)) {
+      fail_at(source, line,
+              "'" + tag + "' is a 3D type; antslam reads 2D pose graphs (" + kTags + ")");
+    } else {
+      fail_at(source, line, "unsupported tag '" + tag + "' (expected " + kTags + ")");
     }
   });
-  if (vertices.empty()) throw std::runtime_error(source + ": no VERTEX_SE2 lines");
+  if (vertices.empty() && edges.empty())
+    throw std::runtime_error(source + ": no vertices or edges");
   PoseGraph graph;
+  graph.vertices_from_file = !vertices.empty();
   for (const auto& [id, vertex] : vertices) {
     if (id != graph.vertices.size())
       throw std::runtime_error(source + ": vertex ids must be 0..n-1; vertex " +
                                std::to_string(graph.vertices.size()) + " is missing");
     graph.vertices.push_back(vertex.first);
   }
+  const std::size_t n =
+      graph.vertices_from_file ? graph.vertices.size() : vertices_of_edges(edges, source);
   for (const auto& [edge, line] : edges) {
-    if (edge.from >= graph.vertices.size() || edge.to >= graph.vertices.size())
-      fail_at(source, line, "edge to an undefined vertex");
+    if (edge.from >= n || edge.to >= n) fail_at(source, line, "edge to an undefined vertex");
     graph.edges.push_back(edge);
+  }
+  for (const auto& [id, line] : fixed) {
+    if (id >= n) fail_at(source, line, "FIX of undefined vertex " + std::to_string(id));
+    graph.fixed.push_back(id);
+  }
+  std::sort(graph.fixed.begin(), graph.fixed.end());
+  graph.fixed.erase(std::unique(graph.fixed.begin(), graph.fixed.end()), graph.fixed.end());
+  if (!graph.vertices_from_file) {
+    graph.vertices.resize(n);
+    graph.vertices = spanning_tree_poses(graph, source);
   }
   return graph;
 }
@@ -123,108 +195,22 @@ PoseGraph read_g2o_file(const std::filesystem::path& path) {
   return read_g2o(in, path.string());
 }
 
-void write_g2o(std::ostream& out, const PoseGraph& graph) {
-  out << std::setprecision(std::numeric_limits<double>::max_digits10);
-  for (std::size_t i = 0; i < graph.vertices.size(); ++i) {
-    const Pose2& p = graph.vertices[i];
-    out << "VERTEX_SE2 " << i << ' ' << p.x << ' ' << p.y << ' ' << p.theta << '\n';
-  }
-  for (const PoseGraphEdge& e : graph.edges) {
-    const Pose2& z = e.measurement;
-    const Eigen::Matrix3d& w = e.information;
-    out << "EDGE_SE2 " << e.from << ' ' << e.to << ' ' << z.x << ' ' << z.y << ' ' << z.theta << ' '
-        << w(0, 0) << ' ' << w(0, 1) << ' ' << w(0, 2) << ' ' << w(1, 1) << ' ' << w(1, 2) << ' '
-        << w(2, 2) << '\n';
-  }
+void write_g2o(std::ostream& out, const PoseGraph& graph) { write_lines(out, graph, false); }
+
+void write_toro(std::ostream& out, const PoseGraph& graph) { write_lines(out, graph, true); }
+
+bool is_pose_graph_file(const std::filesystem::path& path) {
+  return path.extension() == ".g2o" || path.extension() == ".graph";
 }
 
-Eigen::Matrix3d inverse_covariance(const Pose2& z, const Eigen::Matrix3d& covariance) {
-  const double c = std::cos(z.theta), s = std::sin(z.theta);
-  Eigen::Matrix3d j;  // d(z^-1)/dz, z^-1 = (-c x - s y, s x - c y, -theta)
-  j << -c, -s, s * z.x - c * z.y, s, -c, c * z.x + s * z.y, 0.0, 0.0, -1.0;
-  const Eigen::Matrix3d out = j * covariance * j.transpose();
-  return 0.5 * (out + out.transpose());
-}
-
-Gaussian2 oriented(const PoseGraphEdge& edge, std::size_t from) {
-  const Eigen::Matrix3d covariance = symmetric_inverse(edge.information);
-  if (edge.from == from) return Gaussian2(edge.measurement, covariance);
-  return Gaussian2(edge.measurement.inverse(), inverse_covariance(edge.measurement, covariance));
-}
-
-FragmentSet fragment_set_from_g2o(const PoseGraph& graph, const G2oImportSettings& settings,
-                                  const std::string& source) {
-  if (settings.samples == 0) throw std::invalid_argument("g2o import: samples must be >= 1");
-  const std::size_t n = graph.vertices.size();
-  if (n < 2) throw std::invalid_argument(source + ": a pose graph needs at least 2 vertices");
-  FragmentSet set;
-  set.name = source;
-  set.fragments.resize(n);
-  const auto oriented_from = [&source](const PoseGraphEdge& e, std::size_t a) {
-    try {
-      return oriented(e, a);
-    } catch (const std::invalid_argument& problem) {
-      throw std::invalid_argument(source + ": EDGE_SE2 " + std::to_string(e.from) + " " +
-                                  std::to_string(e.to) + ": as a Gaussian from vertex " +
-                                  std::to_string(a) + ", " + problem.what());
-    }
-  };
-  for (const PoseGraphEdge& e : graph.edges) {
-    const std::size_t a = std::min(e.from, e.to), b = std::max(e.from, e.to);
-    Fragment& f = set.fragments[b];
-    if (b == a + 1 && !f.alignment) {
-      f.alignment = oriented_from(e, a);
-    } else {
-      set.closures.push_back({a, b, Pose2{}, oriented_from(e, a)});
-    }
-  }
-  aco::Rng rng(aco::mix_seed(settings.seed, 0x6207));
-  for (std::size_t i = 1; i < n; ++i) {
-    Fragment& f = set.fragments[i];
-    if (!f.alignment)
-      throw std::invalid_argument(source + ": no edge between vertices " + std::to_string(i - 1) +
-                                  " and " + std::to_string(i) +
-                                  " (the graph must chain consecutive poses)");
-    for (std::size_t j = 0; j < settings.samples; ++j)
-      f.samples.push_back(f.alignment->sample(rng));
-    set.fragments[i - 1].exit = f.alignment->mean();
-  }
-  if (set.closures.empty())
-    throw std::invalid_argument(source + ": the pose graph has no loop-closure edge");
-  try {
-    validate(set);  // e.g. an edge's measurement beyond kMaxCoordinate, now a fragment's exit
-  } catch (const std::invalid_argument& problem) {
-    throw std::invalid_argument(source + ": " + problem.what());
-  }
-  return set;
-}
-
-PoseGraph pose_graph_of(const FragmentSet& set, std::span<const Pose2> frames) {
-  validate(set);
-  if (frames.size() != set.fragments.size())
-    throw std::invalid_argument("pose_graph_of: got " + std::to_string(frames.size()) +
-                                " frames, expected " + std::to_string(set.fragments.size()));
-  PoseGraph graph;
-  graph.vertices.assign(frames.begin(), frames.end());
-  for (std::size_t i = 1; i < set.fragments.size(); ++i) {
-    const Gaussian2& g = *set.fragments[i].alignment;
-    graph.edges.push_back({i - 1, i, g.mean(), g.information()});
-  }
-  for (const LoopClosure& c : set.closures) {
-    // The closure says F_b A ~ H in F_a, i.e. F_b ~ H A^-1.
-    const Pose2 anchor_inverse = c.anchor.inverse();
-    const Eigen::Matrix3d j = right_compose_jacobian(c.hypothesis.mean(), anchor_inverse);
-    const Eigen::Matrix3d cov = j * c.hypothesis.covariance() * j.transpose();
-    graph.edges.push_back({c.from, c.to, c.hypothesis.mean() * anchor_inverse,
-                           symmetric_inverse(0.5 * (cov + cov.transpose()))});
-  }
-  return graph;
+void write_pose_graph(std::ostream& out, const PoseGraph& graph,
+                      const std::filesystem::path& name) {
+  write_lines(out, graph, name.extension() == ".graph");
 }
 
 std::vector<Pose2> read_reference_poses(const std::filesystem::path& path) {
-  const std::string ext = path.extension().string();
-  if (ext == ".g2o") return read_g2o_file(path).vertices;
-  if (ext == ".tum") {
+  if (is_pose_graph_file(path)) return read_g2o_file(path).vertices;
+  if (path.extension() == ".tum") {
     std::vector<Pose2> poses;
     for (const StampedPose& p : read_tum_file(path)) poses.push_back(p.pose);
     return poses;
@@ -233,18 +219,13 @@ std::vector<Pose2> read_reference_poses(const std::filesystem::path& path) {
   return read_pose_lines(in, path.string());
 }
 
-FragmentSet read_optimizer_input(const std::filesystem::path& path,
-                                 const G2oImportSettings& settings) {
-  if (path.extension() != ".g2o") return read_fragment_set_file(path);
-  return fragment_set_from_g2o(read_g2o_file(path), settings, path.string());
-}
-
-std::vector<Pose2> reference_frames(const FragmentSet& set, const std::filesystem::path& path) {
-  if (path.empty()) return set.reference;
+std::vector<Pose2> reference_poses(std::size_t count, std::span<const Pose2> own,
+                                   const std::filesystem::path& path) {
+  if (path.empty()) return {own.begin(), own.end()};
   std::vector<Pose2> poses = read_reference_poses(path);
-  if (poses.size() != set.fragments.size())
+  if (poses.size() != count)
     throw std::runtime_error(path.string() + ": has " + std::to_string(poses.size()) +
-                             " poses, the fragment set " + std::to_string(set.fragments.size()));
+                             " poses, expected " + std::to_string(count));
   return poses;
 }
 

@@ -78,11 +78,12 @@ void run_random(const FragmentSet& set, const OptimizeSettings& s, detail::Recor
   const SlamProblem problem(set);
   const std::size_t paths =
       s.aco.ants > 0 ? s.aco.ants : aco::default_ants(aco::Variant::hybrid, 0, false, false);
-  const SearchResult r =
-      random_search(problem, s.iterations, paths, s.seed, s.time_limit_s,
-                    [&](std::uint64_t round, std::uint64_t evaluations, double weight) {
-                      recorder.improve(round, evaluations, weight);
-                    });
+  const SearchResult r = random_search(
+      problem, s.iterations, paths, s.seed, s.time_limit_s,
+      [&](std::uint64_t round, std::uint64_t evaluations, double weight) {
+        recorder.improve(round, evaluations, weight);
+      },
+      s.stop);
   result.choice = r.choice;
   result.evaluations = r.evaluations;
   result.iterations = r.evaluations / paths;
@@ -122,6 +123,12 @@ bool is_discrete(Method m) {
 
 std::optional<aco::Variant> aco_variant(Method m) { return info(m).variant; }
 
+RefineSettings refine_settings(const OptimizeSettings& settings) {
+  RefineSettings refine = settings.refine;
+  refine.stop = settings.stop;
+  return refine;
+}
+
 OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings,
                         const OptimizeObserver& observer) {
   validate(set);
@@ -134,7 +141,7 @@ OptimizeResult optimize(const FragmentSet& set, const OptimizeSettings& settings
   switch (settings.method) {
     case Method::nlopt: {
       const RefineResult r =
-          Refiner(set, settings.refine)
+          Refiner(set, refine_settings(settings))
               .refine(start, detail::stage_budget(settings.time_limit_s, recorder.elapsed(),
                                                   settings.refine.time_limit_s));
       result.alignments = r.alignments;

@@ -46,10 +46,11 @@ void run_aco(const FragmentSet& set, const OptimizeSettings& settings, Recorder&
   p.variant = aco_variant(settings.method).value();
   p.seed = settings.seed;
   const aco::Termination termination{.max_iterations = settings.iterations,
-                                     .time_limit_s = settings.time_limit_s};
+                                     .time_limit_s = settings.time_limit_s,
+                                     .stop = settings.stop};
   const bool refine = settings.method == Method::hybrid_nlopt;
   std::optional<PathRefiner> refiner;
-  if (refine) refiner.emplace(set, settings.refine);
+  if (refine) refiner.emplace(set, refine_settings(settings));
   const std::uint64_t ants = aco::colony_settings(p, problem.layer_count(), false, false).ants;
   std::uint64_t refine_evaluations = 0;
   // A refinement gets what is left of the run's budget (ants and refinement share it).

@@ -1,13 +1,11 @@
 #include "slamgraph/refine.hpp"
 
-#include <nlopt.hpp>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "nlopt_stages.hpp"
 
 namespace antslam::slam {
 
@@ -15,6 +13,10 @@ namespace {
 
 constexpr RefineAlgorithm kAlgorithms[] = {RefineAlgorithm::lbfgs, RefineAlgorithm::slsqp,
                                            RefineAlgorithm::bobyqa};
+
+}  // namespace
+
+namespace detail {
 
 nlopt::algorithm nlopt_algorithm(RefineAlgorithm a) {
   switch (a) {
@@ -28,27 +30,7 @@ nlopt::algorithm nlopt_algorithm(RefineAlgorithm a) {
   throw std::invalid_argument("unknown refinement algorithm");
 }
 
-/// What the NLopt callback sees: the objective and the best point so far.
-struct Tracker {
-  AlignmentObjective* objective;
-  std::vector<double> best_x;
-  double best = std::numeric_limits<double>::infinity();
-  int evaluations = 0;
-};
-
-double callback(unsigned n, const double* x, double* grad, void* data) {
-  auto& t = *static_cast<Tracker*>(data);
-  const Scores s =
-      t.objective->evaluate({x, n}, grad ? std::span<double>(grad, n) : std::span<double>());
-  ++t.evaluations;
-  if (s.weight < t.best) {
-    t.best = s.weight;
-    t.best_x.assign(x, x + n);
-  }
-  return s.weight;
-}
-
-}  // namespace
+}  // namespace detail
 
 std::string_view to_string(RefineAlgorithm a) {
   switch (a) {
@@ -101,34 +83,6 @@ Refiner::Refiner(const FragmentSet& set, const RefineSettings& settings)
   }
 }
 
-std::vector<double> Refiner::minimise(const std::vector<double>& x,
-                                      const std::vector<double>& lower,
-                                      const std::vector<double>& upper, double seconds,
-                                      int& evaluations) {
-  Tracker tracker{&objective_, x};
-  tracker.best = objective_.evaluate(x).weight;
-  nlopt::opt opt(nlopt_algorithm(settings_.algorithm), static_cast<unsigned>(x.size()));
-  opt.set_min_objective(callback, &tracker);
-  opt.set_lower_bounds(lower);
-  opt.set_upper_bounds(upper);
-  opt.set_maxeval(settings_.max_evaluations);
-  opt.set_ftol_rel(settings_.relative_tolerance);
-  if (seconds > 0.0) opt.set_maxtime(seconds);
-  if (settings_.algorithm == RefineAlgorithm::lbfgs)
-    opt.set_vector_storage(static_cast<unsigned>(settings_.lbfgs_memory));
-  std::vector<double> point = x;
-  double final_weight = 0.0;
-  try {
-    opt.optimize(point, final_weight);
-  } catch (const nlopt::roundoff_limited&) {
-    // Roundoff ends the search; the best point evaluated so far stands.
-  } catch (const std::runtime_error&) {
-    // NLOPT_FAILURE (e.g. a line search that cannot progress): same.
-  }
-  evaluations += tracker.evaluations + 1;
-  return tracker.best_x;
-}
-
 RefineResult Refiner::refine(std::span<const Pose2> start) {
   return refine(start, settings_.time_limit_s);
 }
@@ -149,44 +103,16 @@ RefineResult Refiner::refine(std::span<const Pose2> start, double seconds) {
       upper[d] = std::max(upper[d], x[d]);
     }
   }
-  const auto began = std::chrono::steady_clock::now();
-  // Seconds left for NLopt (0 = no limit), and whether the budget is spent.
-  const auto remaining = [&] {
-    if (seconds <= 0.0) return 0.0;
-    const std::chrono::duration<double> used = std::chrono::steady_clock::now() - began;
-    return std::max(1e-6, seconds - used.count());
-  };
-  const auto spent = [&] {
-    return seconds > 0.0 &&
-           std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count() >=
-               seconds;
-  };
+  RefineSettings budgeted = settings_;
+  budgeted.time_limit_s = seconds;
+  const detail::StagedMinimum m =
+      detail::NloptStages<AlignmentObjective>(objective_, budgeted).run(x, lower, upper);
   RefineResult result;
-  objective_.set_kernel_width(1.0);
-  result.start = objective_.evaluate(x);
-  std::vector<double> best = minimise(x, lower, upper, remaining(), result.evaluations);
-  result.scores = objective_.evaluate(best);
-  if (settings_.graduated && !spent()) {
-    // Stages s_0 = sqrt(chi2) >= every term's Mahalanobis distance, s_0 / f, ..., 1.
-    double width = std::max(1.0, std::sqrt(result.start.chi2));
-    std::vector<double> point = x;
-    for (;;) {
-      if (spent()) break;
-      objective_.set_kernel_width(width);
-      point = minimise(point, lower, upper, remaining(), result.evaluations);
-      if (width == 1.0) break;
-      width = std::max(1.0, width / settings_.graduation_factor);
-    }
-    objective_.set_kernel_width(1.0);  // the stages may have ended early, at a wider kernel
-    const Scores graduated = objective_.evaluate(point);
-    if (graduated.weight < result.scores.weight) {
-      best = point;
-      result.scores = graduated;
-      result.graduated = true;
-    }
-  }
-  result.alignments = AlignmentObjective::unpack(best);
-  result.evaluations += 2;
+  result.alignments = AlignmentObjective::unpack(m.x);
+  result.start = m.start;
+  result.scores = m.scores;
+  result.evaluations = m.evaluations;
+  result.graduated = m.graduated;
   return result;
 }
 

@@ -77,8 +77,8 @@ SearchResult exhaustive_search(const FragmentSet& set, std::uint64_t max_paths) 
 }
 
 SearchResult random_search(const SlamProblem& problem, std::uint64_t iterations, std::size_t paths,
-                           std::uint64_t seed, double time_limit_s,
-                           const SearchObserver& observer) {
+                           std::uint64_t seed, double time_limit_s, const SearchObserver& observer,
+                           std::stop_token stop) {
   if (paths == 0) throw std::invalid_argument("random search needs at least one path per round");
   if (iterations == 0 && !(time_limit_s > 0.0))
     throw std::invalid_argument("random search: set rounds or a time limit");
@@ -101,6 +101,7 @@ SearchResult random_search(const SlamProblem& problem, std::uint64_t iterations,
       }
     }
     if (improved && observer) observer(t, result.evaluations, result.weight);
+    if (stop.stop_requested()) break;
     if (time_limit_s > 0.0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >=
             time_limit_s)

@@ -14,17 +14,16 @@ std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial) {
   return aco::mix_seed(seed, trial, 0x7472);
 }
 
-std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
+std::vector<OptimizeResult> run_trials(const TrialRunner& run, const OptimizeSettings& settings,
                                        const TrialSettings& trials, const TrialsObserver& observer,
                                        const OptimizeObserver& convergence) {
   if (trials.trials == 0) throw std::invalid_argument("trials must be >= 1");
-  validate(set);
   if (trials.trials == 1) {
     OptimizeSettings s = settings;
     s.seed = trial_seed(settings.seed, 0);
     s.threads = trials.threads;
     s.backend = trials.backend;
-    std::vector<OptimizeResult> results{optimize(set, s, convergence)};
+    std::vector<OptimizeResult> results{run(s, convergence)};
     if (observer) observer(1);
     return results;
   }
@@ -37,7 +36,7 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
       s.seed = trial_seed(settings.seed, t);
       s.threads = 1;
       s.backend = aco::BackendKind::serial;
-      results[t] = optimize(set, s);
+      results[t] = run(s, {});
       const std::lock_guard lock(mutex);
       ++finished;
       if (observer) observer(finished);
@@ -46,9 +45,18 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
   return results;
 }
 
-double trial_result_bytes(const FragmentSet& set) {
+std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSettings& settings,
+                                       const TrialSettings& trials, const TrialsObserver& observer,
+                                       const OptimizeObserver& convergence) {
+  validate(set);
+  return run_trials(
+      [&set](const OptimizeSettings& s, const OptimizeObserver& o) { return optimize(set, s, o); },
+      settings, trials, observer, convergence);
+}
+
+double trial_result_bytes(std::size_t poses) {
   constexpr double kConvergencePoints = 64;  // improvements recorded per trial, typically
-  const auto n = static_cast<double>(set.fragments.size());
+  const auto n = static_cast<double>(poses);
   return static_cast<double>(sizeof(OptimizeResult)) +
          n * (2.0 * sizeof(Pose2) + sizeof(std::uint32_t)) +
          kConvergencePoints * sizeof(ConvergencePoint);

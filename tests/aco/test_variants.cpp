@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
+#include <stop_token>
+#include <string>
 #include <vector>
 
 #include "aco/synthetic_layered.hpp"
@@ -141,6 +145,54 @@ TEST(Termination, StopsOnTheTimeBudget) {
   EXPECT_EQ(r.reason, StopReason::time);
   EXPECT_GE(r.elapsed_s, 0.05);
   EXPECT_LE(r.time_to_best_s, r.elapsed_s);
+}
+
+// A stop request (a user's Ctrl-C) ends the run after the iteration in which it came, and
+// expires the token that local searches poll; the run up to there is the uninterrupted run's.
+TEST(Termination, AStopRequestEndsTheRunAfterItsIteration) {
+  const SyntheticLayeredProblem problem(6, 5, 2);
+  Parameters p;
+  p.variant = Variant::mmas;
+  std::stop_source source;
+  std::vector<double> interrupted_bests;
+  const RunResult r = solve(problem, p, {.max_iterations = 1000, .stop = source.get_token()},
+                            AnyBackend{}, NoLocalSearch{}, [&](const IterationReport& report) {
+                              interrupted_bests.push_back(report.global_best);
+                              if (report.iteration == 7) source.request_stop();
+                            });
+  EXPECT_EQ(r.reason, StopReason::interrupted);
+  EXPECT_EQ(r.iterations, 7U);
+  std::vector<double> bests;
+  solve(problem, p, {.max_iterations = 7}, AnyBackend{}, NoLocalSearch{},
+        [&](const IterationReport& report) { bests.push_back(report.global_best); });
+  EXPECT_EQ(interrupted_bests, bests);
+  constexpr auto kNever = StopToken::Clock::time_point::max();
+  constexpr double kNoCpuLimit = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(StopToken(kNever, kNoCpuLimit, source.get_token()).expired());
+  EXPECT_FALSE(StopToken(kNever, kNoCpuLimit, std::stop_source().get_token()).expired());
+}
+
+// Nonsense parameters are refused with one line naming the field, before any ant runs.
+TEST(Parameters, NonsenseIsRefusedByName) {
+  const SyntheticLayeredProblem problem(3, 3, 1);
+  const auto error_of = [&](auto change) {
+    Parameters p;
+    change(p);
+    try {
+      solve(problem, p, {.max_iterations = 1});
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of([](Parameters& p) { p.rho = 1.5; }),
+            "aco: rho must be in [0, 1] (0: the variant's default)");
+  EXPECT_EQ(error_of([](Parameters& p) { p.alpha = std::nan(""); }),
+            "aco: alpha must be a finite number >= 0");
+  EXPECT_EQ(error_of([](Parameters& p) { p.p_best = 1.0; }), "aco: p_best must be in (0, 1)");
+  EXPECT_EQ(error_of([](Parameters& p) { p.tau_init = 2.0 * p.tau_max; }),
+            "aco: need 0 < tau_init <= tau_max, both finite");
+  EXPECT_EQ(error_of([](Parameters&) {}), "no error");
 }
 
 TEST(Termination, RejectsAnUnboundedRun) {

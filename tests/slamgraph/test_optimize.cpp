@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stop_token>
+
 #include "slamgraph/optimize.hpp"
 #include "slamgraph/search_baselines.hpp"
 #include "slamgraph/synth.hpp"
@@ -111,6 +113,29 @@ TEST(Trials, Statistics) {
   EXPECT_EQ(s.min, 1.0);
   EXPECT_EQ(s.max, 4.0);
   EXPECT_THROW(statistics({}), std::invalid_argument);
+}
+
+// A stop request before the run: the colony and random search end after their first iteration
+// or round, NLopt at its first evaluation of each stage; every result is still a valid one.
+TEST(Optimize, AStopRequestEndsEveryIterativeMethodEarly) {
+  const FragmentSet set = testing::random_set(6, 5, 2, 9);
+  std::stop_source source;
+  source.request_stop();
+  for (const Method m : {Method::mmas, Method::hybrid_nlopt, Method::random, Method::nlopt}) {
+    SCOPED_TRACE(std::string(to_string(m)));
+    OptimizeSettings s = quick(m);
+    s.iterations = 100000;
+    s.stop = source.get_token();
+    const OptimizeResult r = optimize(set, s);
+    EXPECT_LE(r.iterations, 1U);
+    EXPECT_EQ(r.scores.weight, score(set, r.alignments).weight);
+    if (m == Method::nlopt) {
+      EXPECT_LT(r.evaluations, 20U);  // of up to 2000 per stage
+    }
+  }
+  OptimizeSettings stopped;
+  stopped.stop = source.get_token();
+  EXPECT_TRUE(refine_settings(stopped).stop.stop_requested());
 }
 
 TEST(Optimize, RejectsNonsense) {

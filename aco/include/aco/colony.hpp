@@ -223,7 +223,8 @@ class Colony {
                              : Clock::time_point::max(),
                          termination.cpu_time_limit_s > 0.0
                              ? cpu_start + termination.cpu_time_limit_s
-                             : std::numeric_limits<double>::infinity());
+                             : std::numeric_limits<double>::infinity(),
+                         termination.stop);
     RunResult result;
     for (;;) {
       IterationReport report = step(stop);
@@ -246,6 +247,8 @@ class Colony {
       } else if (termination.stagnation_iterations > 0 &&
                  iteration_ - result.best_iteration >= termination.stagnation_iterations) {
         result.reason = StopReason::stagnation;
+      } else if (termination.stop.stop_requested()) {
+        result.reason = StopReason::interrupted;
       } else {
         continue;
       }

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <ctime>
 #include <limits>
+#include <stop_token>
 #include <string_view>
+#include <utility>
 
 namespace antslam::aco {
 
@@ -18,6 +20,8 @@ struct Termination {
   double target_cost = -std::numeric_limits<double>::infinity();  ///< stop once best <= target
   std::uint64_t stagnation_iterations = 0;  ///< stop after this many iterations without a new
                                             ///< global best; 0 = never
+  std::stop_token stop{};  ///< once stop is requested (a user's Ctrl-C), the run ends after the
+                           ///< current iteration and local searches end early; not a bound itself
   /// When the wall-clock budget starts; default (the clock's epoch): when the run starts. A
   /// caller whose budget also covers building the problem and the colony (a million cities take
   /// seconds) sets it to its own start.
@@ -29,7 +33,7 @@ struct Termination {
   }
 };
 
-enum class StopReason { iterations, time, cpu_time, target, stagnation };
+enum class StopReason { iterations, time, cpu_time, target, stagnation, interrupted };
 
 constexpr std::string_view to_string(StopReason r) {
   switch (r) {
@@ -43,6 +47,8 @@ constexpr std::string_view to_string(StopReason r) {
       return "target";
     case StopReason::stagnation:
       return "stagnation";
+    case StopReason::interrupted:
+      return "interrupted";
   }
   return "?";
 }
@@ -53,10 +59,13 @@ class StopToken {
   using Clock = std::chrono::steady_clock;
 
   StopToken() = default;
-  StopToken(Clock::time_point wall_deadline, double cpu_deadline_s)
-      : wall_deadline_(wall_deadline), cpu_deadline_s_(cpu_deadline_s) {}
+  StopToken(Clock::time_point wall_deadline, double cpu_deadline_s, std::stop_token request = {})
+      : wall_deadline_(wall_deadline),
+        cpu_deadline_s_(cpu_deadline_s),
+        request_(std::move(request)) {}
 
   bool expired() const {
+    if (request_.stop_requested()) return true;
     if (wall_deadline_ != Clock::time_point::max() && Clock::now() >= wall_deadline_) return true;
     return cpu_deadline_s_ < std::numeric_limits<double>::infinity() &&
            cpu_seconds() >= cpu_deadline_s_;
@@ -70,6 +79,7 @@ class StopToken {
  private:
   Clock::time_point wall_deadline_ = Clock::time_point::max();
   double cpu_deadline_s_ = std::numeric_limits<double>::infinity();
+  std::stop_token request_;  // a stop requested from outside
 };
 
 }  // namespace antslam::aco

@@ -12,11 +12,13 @@
 // With local search, every variant except hybrid and acs defaults to 25 ants, and MMAS to
 // rho = 0.2 (Dorigo & Stuetzle 2004, Table 3.3 and Sec. 3.7.2; ACOTSP).
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <type_traits>
 
@@ -57,6 +59,28 @@ struct Parameters {
   double tau_init = 100.0;      ///< initial pheromone
   double hybrid_deposit = 1.0;  ///< numerator Q of the deposit Q/W (eq. 12: 1)
 };
+
+/// Throws std::invalid_argument "aco: FIELD must be ..." for the first nonsensical parameter.
+inline void validate(const Parameters& p) {
+  const auto require = [](bool ok, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("aco: ") + what);
+  };
+  const auto finite_at_least = [](double v, double lo) { return std::isfinite(v) && v >= lo; };
+  require(finite_at_least(p.alpha, 0.0), "alpha must be a finite number >= 0");
+  require(finite_at_least(p.beta, 0.0), "beta must be a finite number >= 0");
+  require(p.rho >= 0.0 && p.rho <= 1.0, "rho must be in [0, 1] (0: the variant's default)");
+  require(p.q0 >= 0.0 && p.q0 <= 1.0, "q0 must be in [0, 1]");
+  require(p.xi >= 0.0 && p.xi <= 1.0, "xi must be in [0, 1]");
+  require(p.p0 >= 0.0 && p.p0 <= 1.0, "p0 must be in [0, 1]");
+  require(finite_at_least(p.elite_weight, 0.0), "elite_weight must be a finite number >= 0");
+  require(p.rank_width >= 1, "rank_width must be >= 1");
+  require(p.p_best > 0.0 && p.p_best < 1.0, "p_best must be in (0, 1)");
+  require(p.glob_best_freq >= 1, "glob_best_freq must be >= 1");
+  require(std::isfinite(p.tau_max) && p.tau_init > 0.0 && p.tau_max >= p.tau_init,
+          "need 0 < tau_init <= tau_max, both finite");
+  require(std::isfinite(p.hybrid_deposit) && p.hybrid_deposit > 0.0,
+          "hybrid_deposit must be a finite number > 0");
+}
 
 /// Default number of ants; `decisions` is the number of cities (or layers).
 constexpr std::size_t default_ants(Variant v, std::size_t decisions, bool permutation,
@@ -141,6 +165,7 @@ decltype(auto) with_colony(const Problem& problem, const Parameters& p, Exec bac
   } else {
     decisions = problem.layer_count();
   }
+  validate(p);
   const ColonySettings settings = colony_settings(p, decisions, kPermutation, kLs);
   return with_variant_policies(p, resolved_rho(p, kLs), [&](auto rule, auto update) {
     Colony<Problem, decltype(rule), decltype(update), LocalSearch, Exec> colony(

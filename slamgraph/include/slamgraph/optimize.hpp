@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -70,7 +71,13 @@ struct OptimizeSettings {
   CeresSettings ceres;                   ///< Ceres baselines
   std::uint64_t max_exhaustive_paths = 1'000'000'000;  ///< exhaustive: refuse larger trees (count)
   std::vector<Pose2> initial;  ///< start of nlopt / ceres (N - 1 alignments); empty = means
+  std::stop_token stop{};  ///< once stop is requested (a user's Ctrl-C), the colony ends after its
+                           ///< iteration, random search after its round and NLopt at its next
+                           ///< evaluation (refine.stop is set from it); Ceres runs to its end
 };
+
+/// settings.refine with the stop token of `settings`.
+RefineSettings refine_settings(const OptimizeSettings& settings);
 
 /// The best weight found so far, reported whenever it improves.
 struct ConvergencePoint {

@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <span>
+#include <stop_token>
 #include <string_view>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct RefineSettings {
   bool graduated = true;  ///< also refine by graduated non-convexity (above); max_evaluations
                           ///< then applies to every stage
   double graduation_factor = 2.0;  ///< kernel width divided by this per stage (> 1)
+  std::stop_token stop{};  ///< once stop is requested, the refinement ends at its next evaluation
+                           ///< with the best point so far (optimize() sets it from its own)
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.
@@ -81,11 +84,6 @@ class Refiner {
   std::span<const double> upper() const { return upper_; }
 
  private:
-  /// NLopt from x in the box [lower, upper] on the objective at its current kernel width, with
-  /// at most `seconds` (0 = no limit); returns the best point evaluated.
-  std::vector<double> minimise(const std::vector<double>& x, const std::vector<double>& lower,
-                               const std::vector<double>& upper, double seconds, int& evaluations);
-
   AlignmentObjective objective_;
   RefineSettings settings_;
   std::vector<double> mean_angle_;  // mu_theta per alignment, to unwrap starts near it

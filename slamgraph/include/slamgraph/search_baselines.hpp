@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stop_token>
 #include <vector>
 
 #include "slamgraph/fragment_set.hpp"
@@ -32,10 +33,11 @@ using SearchObserver = std::function<void(std::uint64_t, std::uint64_t, double)>
 
 /// Uniform random sampling at the ants' budget: in each of `iterations` rounds, `paths` paths
 /// are drawn uniformly (path p of round t from aco::ant_stream(seed, t, p), so the result does
-/// not depend on threads) and the best is kept. Stops early after `time_limit_s` (0 = none);
-/// 0 rounds means no limit on rounds (then a time limit is required). At least one round runs.
+/// not depend on threads) and the best is kept. Stops early after `time_limit_s` (0 = none), or
+/// after the round in which `stop` is requested; 0 rounds means no limit on rounds (then a time
+/// limit is required). At least one round runs.
 SearchResult random_search(const SlamProblem& problem, std::uint64_t iterations, std::size_t paths,
                            std::uint64_t seed, double time_limit_s,
-                           const SearchObserver& observer = {});
+                           const SearchObserver& observer = {}, std::stop_token stop = {});
 
 }  // namespace antslam::slam

@@ -26,6 +26,17 @@ struct TrialSettings {
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the trials in parallel
 };
 
+/// One trial: the method of `settings` (seed, threads and backend set for the trial), with the
+/// convergence observer (empty for trials that run beside others).
+using TrialRunner =
+    std::function<OptimizeResult(const OptimizeSettings& settings, const OptimizeObserver&)>;
+
+/// Runs trials.trials trials of `run` as run_trials below does for a fragment set.
+std::vector<OptimizeResult> run_trials(const TrialRunner& run, const OptimizeSettings& settings,
+                                       const TrialSettings& trials,
+                                       const TrialsObserver& observer = {},
+                                       const OptimizeObserver& convergence = {});
+
 /// Runs trials.trials trials of settings.method (settings.seed seeds the study; settings.threads
 /// and settings.backend are ignored). Several trials are spread over trials.threads threads by
 /// trials.backend, each trial serial; a single trial runs its ants on them instead, and
@@ -35,10 +46,10 @@ std::vector<OptimizeResult> run_trials(const FragmentSet& set, const OptimizeSet
                                        const TrialsObserver& observer = {},
                                        const OptimizeObserver& convergence = {});
 
-/// Bytes one trial's result holds for a set of this size (frames, alignments, choice and a
-/// convergence record of typical length), so that a caller can refuse a trial count that
-/// cannot fit in memory before running it.
-double trial_result_bytes(const FragmentSet& set);
+/// Bytes one trial's result holds for this many poses (fragments or graph vertices: frames,
+/// alignments, choice and a convergence record of typical length), so that a caller can refuse
+/// a trial count that cannot fit in memory before running it.
+double trial_result_bytes(std::size_t poses);
 
 /// The trial with the lowest eq. (10) weight (the first on ties); throws on an empty span.
 std::size_t best_trial(std::span<const OptimizeResult> trials);

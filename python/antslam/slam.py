@@ -1,0 +1,145 @@
+"""AntSLAM fragment sets and pose graphs, and every optimizer of `antslam optimize` on them.
+
+    s = antslam.slam.synth("paper15", seed=1)            # or load("set.json"), from_g2o(...)
+    r = antslam.slam.optimize(s, method="mmas", iterations=500, seed=1)
+    r.weight, r.chi2, r.frames                           # frames: (N, 3) world poses
+
+    g = antslam.slam.read_graph("data/posegraphs/intel.g2o")   # g2o or TORO, FIX lines kept
+    r = antslam.slam.optimize(g, method="ceres")         # r.frames: the vertex poses
+
+Methods: as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, random,
+exhaustive. On a pose graph ceres, ceres-robust and nlopt run on the graph itself (from its
+vertex poses, fixed vertices held); the others on its fragment chain (docs/slamgraph.md).
+"""
+import os
+from dataclasses import dataclass
+
+from . import _core, _options
+
+FragmentSet = _core.slam.FragmentSet
+PoseGraph = _core.slam.PoseGraph
+Result = _core.slam.Result
+ConvergencePoint = _core.slam.ConvergencePoint
+METHODS = tuple(name.strip() for name in _core.slam.method_names().split(","))
+
+# Every option of `antslam optimize`, by its name here, and the settings attribute it sets.
+_OPTIMIZER = dict(
+    {name: "aco." + attribute for name, attribute in _options.ENGINE.items()
+     if name != "ls_ants"},
+    method="method", seed="seed", iterations="iterations", time_limit="time_limit_s",
+    backend="backend", hybrid_deposit="aco.hybrid_deposit",
+    nlopt_algorithm="refine.algorithm", bound_sigmas="refine.bound_sigmas",
+    max_evaluations="refine.max_evaluations", relative_tolerance="refine.relative_tolerance",
+    refine_time_limit="refine.time_limit_s", lbfgs_memory="refine.lbfgs_memory",
+    graduated="refine.graduated", graduation_factor="refine.graduation_factor",
+    refine_each="refine_each_improvement", ceres_iterations="ceres.max_iterations",
+    ceres_tolerance="ceres.function_tolerance", ceres_time_limit="ceres.time_limit_s",
+    max_paths="max_exhaustive_paths", initial="initial")
+
+_SYNTH = {name: name for name in (
+    "fragments", "samples", "loop_length_m", "aspect", "laps", "sigma_xy", "sigma_theta",
+    "correlation", "closure_sigma_xy", "closure_sigma_theta", "revisit_radius_m",
+    "noise_free", "trajectory_poses", "seed")}
+
+
+def load(path):
+    """Reads a fragment-set JSON (docs/fragment-set-format.md)."""
+    return _core.slam.load(os.fspath(path))
+
+
+def synth(preset=None, **settings):
+    """A synthetic fragment set with ground truth (`reference`): a preset (paper9, paper15,
+    paper24), with any setting of slamgraph/synth.hpp overriding it (fragments, samples,
+    loop_length_m, aspect, laps, sigma_xy, sigma_theta, correlation, closure_sigma_xy,
+    closure_sigma_theta, revisit_radius_m, noise_free, trajectory_poses, seed)."""
+    s = _core.slam.synth_preset(preset) if preset else _core.slam.SynthSettings()
+    _options.apply(s, _SYNTH, settings, "synth")
+    return _core.slam.synthesize(s)
+
+
+def read_graph(path):
+    """Reads a 2D pose graph: g2o (VERTEX_SE2, EDGE_SE2, FIX) or TORO (VERTEX2, EDGE2) lines;
+    a file without vertices gets poses composed along its edges."""
+    return _core.slam.read_graph(os.fspath(path))
+
+
+def from_g2o(graph, samples=20, seed=1):
+    """The fragment set of a pose graph (a PoseGraph or a file): vertex i is fragment i, the
+    edges between consecutive vertices its alignments with `samples` samples each."""
+    if not isinstance(graph, PoseGraph):
+        graph = read_graph(graph)
+    return graph.fragment_set(samples, seed)
+
+
+def optimizer_settings(method="hybrid", **options):
+    """The settings object of `antslam optimize` with the given options (see optimize)."""
+    s = _core.slam.OptimizeSettings()
+    _options.apply(s, _OPTIMIZER, dict(options, method=method), "optimize")
+    return s
+
+
+def _run(subject, trials, threads, samples, observer, progress, settings):
+    if isinstance(subject, PoseGraph):
+        return _core.slam.optimize_graph(subject, settings, samples, trials, threads, observer,
+                                         progress)
+    if isinstance(subject, FragmentSet):
+        return _core.slam.optimize_set(subject, settings, trials, threads, observer, progress)
+    raise TypeError(f"optimize(): expected a FragmentSet or a PoseGraph, got "
+                    f"{type(subject).__name__}")
+
+
+def optimize(subject, method="hybrid", *, threads=1, samples=20, observer=None, **options):
+    """One run of `method` on a FragmentSet or a PoseGraph: what `antslam optimize` does with
+    --trials 1 (the run is seeded with trial_seed(seed, 0), so the same seed gives the same
+    result as the program). threads: the ants' threads; samples: per alignment of a pose graph's
+    fragment chain. observer(point) hears every improvement (a ConvergencePoint).
+
+    Options (defaults as the program's): seed, iterations, time_limit, backend, ants, rho,
+    alpha, beta, p0, q0, xi, elite_weight, rank_width, p_best, restarts, glob_best_freq,
+    tau_max, tau_init, hybrid_deposit, nlopt_algorithm (lbfgs, slsqp, bobyqa), bound_sigmas,
+    max_evaluations, relative_tolerance, refine_time_limit, lbfgs_memory, graduated,
+    graduation_factor, refine_each, ceres_iterations, ceres_tolerance, ceres_time_limit,
+    max_paths, initial ((N - 1, 3) alignments: the start of nlopt and ceres on a set)."""
+    settings = optimizer_settings(method, **options)
+    return _run(subject, 1, threads, samples, observer, None, settings)[0]
+
+
+@dataclass(frozen=True)
+class Study:
+    """Independent trials of one method (what `antslam optimize --trials T` summarizes)."""
+    results: list          #: every trial's Result, in trial order
+    summary: object        #: statistics of weight, chi2 and time over the trials
+
+    @property
+    def best_trial(self):
+        return self.summary.best_trial
+
+    @property
+    def best(self):
+        return self.results[self.summary.best_trial]
+
+    @property
+    def weight(self):
+        return self.summary.weight
+
+    @property
+    def chi2(self):
+        return self.summary.chi2
+
+
+def study(subject, method="hybrid", trials=20, *, threads=1, samples=20, progress=None,
+          **options):
+    """`trials` independent trials (trial t seeded with trial_seed(seed, t)), spread over
+    `threads`; the results do not depend on the threads. progress(finished) is called after
+    each trial. Options as in optimize."""
+    settings = optimizer_settings(method, **options)
+    results = _run(subject, trials, threads, samples, None, progress, settings)
+    name = subject.name
+    return Study(results, _core.slam.summarize(name, settings, results))
+
+
+chain = _core.slam.chain
+relative_alignments = _core.slam.relative_alignments
+read_reference_poses = _core.slam.read_reference_poses
+graph_of_set = _core.slam.graph_of_set
+trial_seed = _core.slam.trial_seed

@@ -1,0 +1,25 @@
+#pragma once
+// One function per area registers that area's classes and functions on its submodule of
+// antslam._core; the Python package (python/antslam) wraps them in keyword-argument functions.
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+namespace antslam::python {
+
+namespace py = pybind11;
+
+void bind_engine(py::module_& aco);          ///< engine.cpp: Parameters, Termination, Run
+void bind_layered(py::module_& aco);         ///< layered_bindings.cpp: problems from tables
+void bind_tsp(py::module_& tsp);             ///< tsp_bindings.cpp
+void bind_slam_data(py::module_& slam);      ///< slam_data_bindings.cpp: sets and graphs
+void bind_slam_optimize(py::module_& slam);  ///< slam_optimize_bindings.cpp
+void bind_mapping(py::module_& mapping);     ///< mapping_bindings.cpp: the pipeline
+void bind_eval(py::module_& eval);           ///< eval_bindings.cpp
+
+/// "NAME: unknown 'VALUE' (expected one of A, B, C)".
+[[noreturn]] void unknown_name(const char* name, const std::string& value,
+                               const std::string& expected);
+
+}  // namespace antslam::python

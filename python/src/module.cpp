@@ -1,0 +1,35 @@
+// antslam._core: the compiled part of the Python package.
+
+#include <pybind11/pybind11.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "bindings.hpp"
+
+namespace antslam::python {
+
+void unknown_name(const char* name, const std::string& value, const std::string& expected) {
+  throw std::invalid_argument(std::string(name) + ": unknown '" + value + "' (expected one of " +
+                              expected + ")");
+}
+
+}  // namespace antslam::python
+
+PYBIND11_MODULE(_core, m) {
+  using namespace antslam::python;
+  m.doc() = "antslam: ant colony optimization for SLAM map optimization and the TSP";
+  m.attr("__version__") = ANTSLAM_VERSION;
+  py::module_ aco = m.def_submodule("aco", "The colony engine: parameters and layered problems");
+  bind_engine(aco);
+  bind_layered(aco);
+  py::module_ tsp = m.def_submodule("tsp", "TSPLIB instances and the TSP solver");
+  bind_tsp(tsp);
+  py::module_ slam = m.def_submodule("slam", "Fragment sets, pose graphs and their optimizers");
+  bind_slam_data(slam);
+  bind_slam_optimize(slam);
+  py::module_ mapping = m.def_submodule("mapping", "The AntSLAM pipeline on a laser log");
+  bind_mapping(mapping);
+  py::module_ eval = m.def_submodule("eval", "Trajectory evaluation: ATE, RPE, relations");
+  bind_eval(eval);
+}

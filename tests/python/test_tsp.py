@@ -1,0 +1,117 @@
+"""antslam.tsp: instances, the solver with every variant and backend, the program's tour for the
+same seed, the observer, and one-line errors."""
+import numpy as np
+import pytest
+
+import antslam
+from conftest import DATA, SOURCE
+
+FIXTURES = SOURCE / "tests" / "tsp" / "fixtures"
+
+
+def test_read_gives_the_instance_and_its_tsplib_distances():
+    instance = antslam.tsp.read(DATA / "tsplib" / "eil51.tsp")
+    assert (instance.name, len(instance), instance.edge_weight_type) == ("eil51", 51, "EUC_2D")
+    assert instance.coords.shape == (51, 2)
+    # EUC_2D: the Euclidean distance rounded to the nearest integer (TSPLIB 95).
+    a, b = instance.coords[0], instance.coords[1]
+    assert instance.distance(0, 1) == np.floor(np.hypot(*(a - b)) + 0.5)
+    tour = instance.read_tour(DATA / "tsplib" / "eil51.opt.tour")
+    assert instance.tour_length(tour) == 426.0
+
+
+def test_solve_returns_a_tour_and_its_length():
+    instance = antslam.tsp.read(FIXTURES / "ulysses16.tsp")
+    result = antslam.tsp.solve(instance, variant="mmas", iterations=30, seed=3)
+    assert sorted(result.tour) == list(range(16))
+    assert result.tour.dtype == np.uint32
+    assert result.length == instance.tour_length(result.tour)
+    assert result.length == 6859.0  # the optimum (ulysses16.opt.tour)
+    assert (result.iterations, result.stop_reason, result.threads) == (30, "iterations", 1)
+
+
+@pytest.mark.parametrize("variant", antslam.aco.VARIANTS)
+def test_every_variant_gives_the_same_tour_on_every_backend(variant):
+    instance = antslam.tsp.read(DATA / "tsplib" / "eil51.tsp")
+    runs = [antslam.tsp.solve(instance, variant=variant, iterations=15, seed=5,
+                              local_search="2opt", backend=backend, threads=threads)
+            for backend, threads in (("serial", 1), ("omp", 2), ("tbb", 2))]
+    for run in runs[1:]:
+        assert run.length == runs[0].length
+        assert np.array_equal(run.tour, runs[0].tour)
+    assert runs[0].variant == variant
+    assert runs[1].backend == "omp" and runs[2].threads == 2
+
+
+def test_same_seed_same_tour_as_the_program(program, tmp_path):
+    path = DATA / "tsplib" / "berlin52.tsp"
+    out = program("tsp", "--instance", path, "--variant", "acs", "--iterations", 40, "--seed", 7,
+                  "--local-search", "2.5opt", "--ants", 12, "--q0", 0.8,
+                  "--tour-out", tmp_path / "b.tour")
+    instance = antslam.tsp.read(path)
+    result = antslam.tsp.solve(instance, variant="acs", iterations=40, seed=7,
+                               local_search="2.5opt", ants=12, q0=0.8)
+    assert np.array_equal(instance.read_tour(tmp_path / "b.tour"), result.tour)
+    assert f"best length  {result.length:g}" in out
+
+
+def test_focused_construction_as_the_program(program, tmp_path):
+    path = DATA / "tsplib" / "eil51.tsp"
+    program("tsp", "--instance", path, "--variant", "mmas", "--iterations", 30, "--seed", 2,
+            "--focused-edges", 8, "--tour-out", tmp_path / "f.tour")
+    instance = antslam.tsp.read(path)
+    focused = antslam.tsp.solve(instance, iterations=30, seed=2, focused_edges=8)
+    assert np.array_equal(instance.read_tour(tmp_path / "f.tour"), focused.tour)
+    plain = antslam.tsp.solve(instance, iterations=30, seed=2)
+    assert not np.array_equal(plain.tour, focused.tour)  # the option reaches the engine
+
+
+def test_the_observer_hears_every_iteration():
+    instance = antslam.tsp.read(FIXTURES / "burma14.tsp")
+    reports = []
+    result = antslam.tsp.solve(instance, iterations=12, seed=1, local_search="none",
+                               observer=reports.append)
+    assert [r.iteration for r in reports] == list(range(1, 13))
+    bests = [r.global_best for r in reports]
+    assert bests == sorted(bests, reverse=True)
+    assert bests[-1] == result.length
+    assert np.array_equal(reports[-1].best, result.tour)
+
+
+def test_stop_criteria():
+    instance = antslam.tsp.read(FIXTURES / "ulysses16.tsp")
+    r = antslam.tsp.solve(instance, iterations=1000, seed=3, target=6859)
+    assert r.stop_reason == "target" and r.length == 6859 and r.iterations < 1000
+    r = antslam.tsp.solve(instance, iterations=0, seed=3, stagnation=5)
+    assert r.stop_reason == "stagnation" and r.iterations - r.best_iteration == 5
+
+
+def test_errors_are_one_line():
+    instance = antslam.tsp.read(FIXTURES / "burma14.tsp")
+    with pytest.raises(ValueError, match=r"^variant: unknown 'mmmas' \(expected one of as, "):
+        antslam.tsp.solve(instance, variant="mmmas")
+    with pytest.raises(ValueError, match=r"^aco: rho must be in \[0, 1\]"):
+        antslam.tsp.solve(instance, rho=1.5)
+    with pytest.raises(ValueError, match=r"^local_search: unknown '4opt'"):
+        antslam.tsp.solve(instance, local_search="4opt")
+    with pytest.raises(ValueError, match=r"^backend serial runs on exactly 1 thread, not 2$"):
+        antslam.tsp.solve(instance, backend="serial", threads=2)
+    with pytest.raises(ValueError, match=r"^termination: set iterations"):
+        antslam.tsp.solve(instance, iterations=0)
+    with pytest.raises(TypeError, match=r"^solve\(\) got an unexpected keyword argument 'rhoo'$"):
+        antslam.tsp.solve(instance, rhoo=0.1)
+    with pytest.raises(TypeError, match=r"^solve\(\): ants=-1 has the wrong type$"):
+        antslam.tsp.solve(instance, ants=-1)
+    with pytest.raises(ValueError, match=r"^tour: expected a permutation of 0..13$"):
+        instance.tour_length([0] * 14)
+    with pytest.raises(RuntimeError, match=r"nan_coordinate\.tsp:\d+: "):
+        antslam.tsp.read(FIXTURES / "nan_coordinate.tsp")
+    with pytest.raises(RuntimeError, match=r"missing\.tsp"):
+        antslam.tsp.read(FIXTURES / "missing.tsp")
+
+
+def test_generate_and_save_round_trip(tmp_path):
+    instance = antslam.tsp.generate(40, seed=4, side=1000)
+    instance.save(tmp_path / "r.tsp")
+    again = antslam.tsp.read(tmp_path / "r.tsp")
+    assert np.array_equal(again.coords, instance.coords)
