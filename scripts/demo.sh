@@ -10,4 +10,4 @@ cmake --build build -j "$(nproc)" --target antslam
 # log's header says): frontend, hybrid ACO + NLopt, corrected trajectory, maps, report.
 # (The former TSP demo is documented in docs/tsp.md.)
 build/experiments/antslam map data/laser/malaga-oneloop.clf --laser-offset 0.78 \
-  --out results/demo/malaga-oneloop
+  --out-dir results/demo/malaga-oneloop
