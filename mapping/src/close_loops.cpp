@@ -6,18 +6,16 @@
 #include <string>
 #include <string_view>
 
+#include "slamgraph/name_table.hpp"
+
 namespace antslam::mapping {
 
 std::string_view to_string(ClosureSelection selection) {
-  for (const ClosureSelectionInfo& info : kClosureSelections)
-    if (info.value == selection) return info.name;
-  return "?";
+  return slam::detail::name_in(kClosureSelections, selection);
 }
 
 std::optional<ClosureSelection> parse_closure_selection(std::string_view name) {
-  for (const ClosureSelectionInfo& info : kClosureSelections)
-    if (info.name == name) return info.value;
-  return std::nullopt;
+  return slam::detail::value_in(kClosureSelections, name);
 }
 
 namespace {

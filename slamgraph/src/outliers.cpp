@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "aco/random.hpp"
-#include "name_table.hpp"
 #include "slamgraph/gaussian2.hpp"
+#include "slamgraph/name_table.hpp"
 #include "text_lines.hpp"
 
 namespace antslam::slam {

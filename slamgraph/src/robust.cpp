@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "name_table.hpp"
 #include "robust_detail.hpp"
 #include "slamgraph/chi_square.hpp"
+#include "slamgraph/name_table.hpp"
 
 namespace antslam::slam {
 

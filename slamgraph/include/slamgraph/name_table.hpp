@@ -1,6 +1,7 @@
 #pragma once
 // Enum <-> name through a table of {value, name, summary} rows (the robust methods, the kinds of
-// false closures): the one lookup both directions use.
+// false closures, the closure selections of the mapping pipeline): the one lookup both directions
+// use.
 
 #include <optional>
 #include <string_view>
