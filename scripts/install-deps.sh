@@ -12,6 +12,7 @@ packages=(
   python3-dev python3-numpy python3-pytest pybind11-dev python3-pybind11  # import antslam
   r-cran-irace  # the irace scenario test (tests/scripts)
   clang libomp-14-dev libclang-rt-14-dev
+  libopenmpi-dev openmpi-bin  # ANTSLAM_WITH_MPI: trials over ranks, island colonies
 )
 
 missing=()
