@@ -15,6 +15,7 @@
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "tsp/experiment.hpp"
+#include "tsp/tsplib.hpp"
 #include "tsp_options_command.hpp"
 #include "validators.hpp"
 
@@ -53,6 +54,15 @@ void run(const ExperimentCommand& c) {
       .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
   e.stop_at_optimum = c.stop_at_optimum;
   tsp::validate(e);
+  // Every instance's colony must fit before the first run starts, not after hours of runs.
+  for (const std::filesystem::path& path : e.instances) {
+    const std::size_t cities = tsp::read_instance(path).size();
+    for (const aco::Variant variant : e.variants) {
+      tsp::SolverSettings solver = e.solver;
+      solver.aco.variant = variant;
+      require_tsp_memory(cities, c.algorithm, solver, path.filename().string());
+    }
+  }
   OutputFiles outputs;
   if (!c.csv_out.empty()) outputs.add(c.csv_out);
   if (!c.markdown_out.empty()) outputs.add(c.markdown_out);

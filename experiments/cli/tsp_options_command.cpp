@@ -7,6 +7,7 @@
 
 #include "aco/variant.hpp"
 #include "backend_option.hpp"
+#include "cli/memory.hpp"
 #include "validators.hpp"
 
 namespace antslam::cli {
@@ -158,6 +159,20 @@ tsp::SolverSettings solver_settings(const TspOptions& o) {
 }
 
 tsp::ProblemSettings problem_settings(const TspOptions& o) { return o.problem; }
+
+void require_tsp_memory(std::size_t cities, const TspOptions& o,
+                        const tsp::SolverSettings& settings, const std::string& instance) {
+  const std::string where = instance.empty() ? "" : instance + ": ";
+  const auto n = static_cast<double>(cities);
+  if (cities <= o.problem.matrix_limit)
+    require_memory(where + "--matrix-limit " + std::to_string(o.problem.matrix_limit) +
+                       " (the distance matrix)",
+                   4.0 * n * n);
+  const std::size_t ants = tsp::resolved_ants(cities, settings);
+  require_memory(where + "--ants " + std::to_string(ants) + " on " + std::to_string(cities) +
+                     " cities (each ant's tour)",
+                 tsp::colony_memory_bytes(cities, ants));
+}
 
 std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& o,
                                const aco::RunSettings& ran) {

@@ -38,6 +38,12 @@ std::string acotsp_local_search(const std::string& level);
 tsp::SolverSettings solver_settings(const TspOptions& options);
 tsp::ProblemSettings problem_settings(const TspOptions& options);
 
+/// Refuses up front (require_memory: UsageError) a run on `cities` cities whose distance matrix
+/// or colony (every ant's tour and visited marks) needs more memory than the machine has, naming
+/// the option and the memory; `instance`, if given, starts the message.
+void require_tsp_memory(std::size_t cities, const TspOptions& options,
+                        const tsp::SolverSettings& settings, const std::string& instance = "");
+
 /// "mmas, 25 ants, rho 0.2, 3opt (20 neighbours), 12 candidates" from what ran.
 std::string describe_algorithm(const tsp::TspProblem& problem, const TspOptions& options,
                                const aco::RunSettings& ran);

@@ -114,6 +114,10 @@ TEST(NearestUnvisited, ConstructionBuildsTheSameToursAsTheEngineScan) {
   fast.prepare(aco::RandomProportional{});
   slow.prepare(aco::RandomProportional{});
   EXPECT_EQ(fast.reference_cost(), slow.reference_cost());
+  // C_nn without building a trail (the hybrid's deposit) is the same greedy tour.
+  EXPECT_EQ(aco::PermutationFamily<TspProblem>::nearest_neighbour_cost(problem),
+            fast.reference_cost());
+  EXPECT_EQ(aco::PermutationFamily<ScanOnly>::nearest_neighbour_cost(scan), slow.reference_cost());
   for (std::uint64_t t = 0; t < 20; ++t) {
     std::vector<std::uint32_t> a, b;
     aco::Rng ra(t), rb(t);

@@ -12,7 +12,7 @@ bool has_local_search(const SolverSettings& s) {
 }  // namespace
 
 double nearest_neighbour_length(const TspProblem& problem) {
-  return aco::PermutationFamily<TspProblem>(problem, 1.0, 0.0).reference_cost();
+  return aco::PermutationFamily<TspProblem>::nearest_neighbour_cost(problem);
 }
 
 aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSettings& settings) {

@@ -150,7 +150,7 @@ class Colony {
   /// budget holds inside an iteration: the local search stops improving, a family that polls
   /// the token (set_stop) finishes the path it builds at once, and ants not begun when it
   /// expires are not built -- they repeat ant 0's path (ant 0 always runs, so the iteration has
-  /// a best; the run ends after such an iteration).
+  /// a best; the run ends after such an iteration, so it does not update the trail).
   IterationReport step(const StopToken& stop = {}) {
     ++iteration_;
     const std::size_t ants = settings_.ants;
@@ -201,22 +201,28 @@ class Colony {
     if (report.improved) best_ = iteration_best;
     report.global_best = best_.cost;
     report.global_best_path = best_.path;
-    update_.apply(family_.trail(),
-                  IterationView{ants_, ranking_, iteration_best, best_, iteration_});
+    // An iteration in which the stop token expired ends the run (run() stops after it), so its
+    // trail update -- every ant's deposit on every edge of its tour, seconds on a million cities
+    // -- would never be used.
+    if (!stop.expired())
+      update_.apply(family_.trail(),
+                    IterationView{ants_, ranking_, iteration_best, best_, iteration_});
     return report;
   }
 
-  /// Runs from fresh trails until a termination criterion holds.
+  /// Runs from fresh trails until a termination criterion holds. Time budgets count from this
+  /// call: building the colony (the heuristic values, the trails' initial values) comes before.
   RunResult run(const Termination& termination, const Observer& observer = {}) {
     if (!termination.bounded())
       throw std::invalid_argument(
           "termination: set iterations, a time budget, a target or stagnation");
-    // The budget counts from here: initialising the trails (a nearest-neighbour tour of a
-    // million cities takes seconds) is part of the run.
+    // The trails were initialised when the colony was built (a nearest-neighbour tour of a
+    // million cities takes about a second); a colony that has run before starts again from fresh
+    // ones. The budget counts from here, after that preprocessing.
+    if (iteration_ != 0) reset();
     using Clock = StopToken::Clock;
-    const auto start = termination.start != Clock::time_point{} ? termination.start : Clock::now();
+    const auto start = Clock::now();
     const double cpu_start = StopToken::cpu_seconds();
-    reset();
     const StopToken stop(termination.time_limit_s > 0.0
                              ? start + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(termination.time_limit_s))

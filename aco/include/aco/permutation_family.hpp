@@ -48,11 +48,8 @@ class PermutationFamily {
  public:
   using Trail = EdgeTrail;
 
-  PermutationFamily(const P& problem, double alpha, double beta)
-      : problem_(&problem), n_(static_cast<std::uint32_t>(problem.size())), alpha_(alpha) {
-    if (n_ < 3) throw std::invalid_argument("permutation problem needs at least 3 nodes");
-    k_ = problem.candidates(0).size();
-    if (k_ == 0) throw std::invalid_argument("permutation problem has empty candidate lists");
+  PermutationFamily(const P& problem, double alpha, double beta) : PermutationFamily(problem) {
+    alpha_ = alpha;
     std::vector<std::uint32_t> neighbours;
     neighbours.reserve(std::size_t{n_} * k_);
     for (std::uint32_t i = 0; i < n_; ++i) {
@@ -104,7 +101,7 @@ class PermutationFamily {
     std::uint32_t* t = begin(s, tour, 0);
     for (std::uint32_t step = 1; step < n_; ++step) {
       std::uint32_t next = kNone;
-      for (std::uint32_t j : trail_.neighbours(t[step - 1]))
+      for (std::uint32_t j : problem_->candidates(t[step - 1]))
         if (!s.visited[j]) {
           next = j;
           break;
@@ -112,6 +109,12 @@ class PermutationFamily {
       visit(s, t, next == kNone ? nearest_unvisited(s, t[step - 1]) : next);
     }
     return problem_->cost(tour);
+  }
+
+  /// reference_cost() without building the trail: the heuristic values and the trail's mirror
+  /// indices of a million nodes take seconds, wasted on a caller that needs only C_nn.
+  static double nearest_neighbour_cost(const P& problem) {
+    return PermutationFamily(problem).reference_cost();
   }
 
   /// Weights tau^alpha eta^beta of every candidate edge (ACOTSP's "total" matrix), in blocks
@@ -206,6 +209,14 @@ class PermutationFamily {
   }
 
  private:
+  /// The problem and its sizes only, no trail: enough for reference_cost().
+  explicit PermutationFamily(const P& problem)
+      : problem_(&problem), n_(static_cast<std::uint32_t>(problem.size())) {
+    if (n_ < 3) throw std::invalid_argument("permutation problem needs at least 3 nodes");
+    k_ = problem.candidates(0).size();
+    if (k_ == 0) throw std::invalid_argument("permutation problem has empty candidate lists");
+  }
+
   static constexpr std::uint32_t kNone = EdgeTrail::kNone;
   static constexpr std::uint32_t kStopPoll = 1024;  ///< steps between looks at the stop token
   static constexpr bool kHasNearestSearch = PermutationProblemWithNearestSearch<P>;
@@ -332,7 +343,7 @@ class PermutationFamily {
   std::size_t min_new_edges_ = 0;  // 0: tours are built from nothing
   SourceTour source_;
   std::size_t k_ = 0;
-  double alpha_;
+  double alpha_ = 1.0;
   EdgeTrail trail_;
   std::vector<double> eta_beta_;
   std::vector<double> weight_;

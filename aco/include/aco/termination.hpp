@@ -22,10 +22,6 @@ struct Termination {
                                             ///< global best; 0 = never
   std::stop_token stop{};  ///< once stop is requested (a user's Ctrl-C), the run ends after the
                            ///< current iteration and local searches end early; not a bound itself
-  /// When the wall-clock budget starts; default (the clock's epoch): when the run starts. A
-  /// caller whose budget also covers building the problem and the colony (a million cities take
-  /// seconds) sets it to its own start.
-  std::chrono::steady_clock::time_point start{};
 
   bool bounded() const {
     return max_iterations > 0 || time_limit_s > 0.0 || cpu_time_limit_s > 0.0 ||
