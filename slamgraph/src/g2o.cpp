@@ -81,6 +81,11 @@ PoseGraphEdge read_edge(std::istringstream& fields, bool toro, const std::string
   const Eigen::LLT<Eigen::Matrix3d> llt(e.information);
   if (llt.info() != Eigen::Success || !(llt.matrixL().toDenseMatrix().diagonal().minCoeff() > 0.0))
     fail_at(source, line, "information matrix is not positive definite");
+  // The fragment sets' bound (a standard deviation of 1e-9): beyond it the optimizers' weights
+  // and kernel widths over- and underflow.
+  if (e.information.diagonal().maxCoeff() > kMaxInformation)
+    fail_at(source, line,
+            "information matrix has an entry above 1e18 (a standard deviation below 1e-9)");
   return e;
 }
 

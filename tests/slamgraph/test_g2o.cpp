@@ -132,6 +132,20 @@ TEST(G2o, RejectsMalformedLines) {
             "graph.g2o:2: edge from a vertex to itself");
   EXPECT_EQ(error_of("VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 0 0 0\nEDGE_SE2 0 1 1 0 0 1 0 0 -1 0 1\n"),
             "graph.g2o:3: information matrix is not positive definite");
+  // Information of 1e300 (a standard deviation of 1e-150) passed the reader and ended NLopt's
+  // graduated refinement in "kernel width must be a positive number"; 1e18 is the fragment
+  // sets' bound, and 1e18 itself is accepted.
+  EXPECT_EQ(
+      error_of("VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 0 0 0\nEDGE_SE2 0 1 1 0 0 1 0 0 1 0 1e300\n"),
+      "graph.g2o:3: information matrix has an entry above 1e18 (a standard deviation below "
+      "1e-9)");
+  EXPECT_EQ(error_of("VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 0 0 0\nEDGE2 0 1 1 0 0 1 0 2e18 1 0 0\n"),
+            "graph.g2o:3: information matrix has an entry above 1e18 (a standard deviation below "
+            "1e-9)");
+  EXPECT_EQ(parse("VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 0 0 0\nEDGE_SE2 0 1 1 0 0 1e18 0 0 1 0 1\n")
+                .edges.at(0)
+                .information(0, 0),
+            1e18);
   EXPECT_EQ(error_of("VERTEX_SE2 0 0 0 0\nEDGE_SE2 0 1 1 0 0 1 0 0 1 0\n"),
             "graph.g2o:2: expected EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33");
   EXPECT_EQ(error_of(""), "graph.g2o: no vertices or edges");
