@@ -76,10 +76,14 @@ OptimizeResult optimize_on_graph(const PoseGraph& graph, const std::string& sour
     RefineSettings refine = refine_settings(settings);
     refine.time_limit_s =
         detail::stage_budget(settings.time_limit_s, recorder.elapsed(), refine.time_limit_s);
-    const detail::StagedMinimum m =
-        detail::NloptStages<GraphObjective>(objective, refine).run(x, lower, upper);
-    result.frames = objective.unpack(m.x);
-    result.evaluations = static_cast<std::uint64_t>(m.evaluations);
+    if (x.empty()) {  // every vertex fixed: nothing to move, and NLopt refuses no unknowns
+      result.frames = objective.unpack(x);
+    } else {
+      const detail::StagedMinimum m =
+          detail::NloptStages<GraphObjective>(objective, refine).run(x, lower, upper);
+      result.frames = objective.unpack(m.x);
+      result.evaluations = static_cast<std::uint64_t>(m.evaluations);
+    }
   } else {
     CeresSettings ceres = settings.ceres;
     ceres.time_limit_s =

@@ -246,6 +246,22 @@ TEST(GraphOptimize, HoldsEveryFixedVertexAndNeedsOneInEachPart) {
             "optimize: a pose graph starts from its vertex poses; set those instead of `initial`");
 }
 
+// Every vertex fixed: nothing to optimize, and every continuous method returns the file's poses
+// (NLopt, given no unknowns, failed with "NULL args to nlopt_optimize_").
+TEST(GraphOptimize, AGraphWithEveryVertexFixedKeepsItsPoses) {
+  Truth t = random_graph(6, 2, 5, 0.3);
+  t.graph.fixed = {0, 1, 2, 3, 4, 5};
+  for (const Method m : {Method::nlopt, Method::ceres, Method::ceres_robust}) {
+    const OptimizeResult r = optimize(t.graph, "fixed.g2o", with_method(m), {});
+    ASSERT_EQ(r.frames.size(), t.graph.vertices.size()) << to_string(m);
+    for (std::size_t v = 0; v < r.frames.size(); ++v) {
+      EXPECT_EQ(r.frames[v].x, t.graph.vertices[v].x) << to_string(m) << " vertex " << v;
+      EXPECT_EQ(r.frames[v].y, t.graph.vertices[v].y) << to_string(m) << " vertex " << v;
+      EXPECT_EQ(r.frames[v].theta, t.graph.vertices[v].theta) << to_string(m) << " vertex " << v;
+    }
+  }
+}
+
 // The ants on a graph's chain: their frames move rigidly onto the fixed vertex's pose, and the
 // result is scored over the graph's edges.
 TEST(GraphOptimize, AntsKeepTheFixedVertexWhereTheFilePutsIt) {
