@@ -93,6 +93,20 @@ TEST(OutputFiles, RefusesADirectoryItCannotWrite) {
   fs::permissions(dir, fs::perms::owner_all);
 }
 
+TEST(OutputFiles, RefusesAParentTheFileSystemWillNotCreate) {
+  // /proc takes no new directories, not even from root (whom access(2) lets write anywhere).
+  const std::string problem = usage_error("/proc/antslam-missing/x.json");
+  EXPECT_NE(problem.find("cannot create a directory in /proc"), std::string::npos) << problem;
+  EXPECT_FALSE(fs::exists("/proc/antslam-missing"));
+}
+
+TEST(OutputFiles, LeavesNoProbeBehind) {
+  const fs::path dir = fresh_dir("probe");
+  OutputFiles outputs;
+  outputs.add(dir / "sub" / "x.json");
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 TEST(OutputFiles, TouchesNothingUntilCommitAndLeavesNoTemporaryFiles) {
   const fs::path dir = fresh_dir("uncommitted");
   put(dir / "a.txt", "old a");

@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <fstream>
 #include <set>
 #include <string>
@@ -20,6 +22,19 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::string_view kStagingPrefix = ".antslam-staging.";
+
+/// Why no directory can be made in `dir` (where the outputs' staging directory or missing
+/// parents will go), or empty if one can: tried with a probe made and removed at once, since
+/// access(2) says yes to root where the file system says no (/proc, a read-only mount).
+std::string cannot_make_directory_in(const fs::path& dir) {
+  const fs::path probe = dir / (".antslam-probe." + std::to_string(::getpid()));
+  if (::mkdir(probe.c_str(), 0700) != 0) {
+    if (errno == EEXIST) return {};
+    return "cannot create a directory in " + dir.string() + ": " + std::strerror(errno);
+  }
+  ::rmdir(probe.c_str());
+  return {};
+}
 
 /// Why `path` cannot be an output file, or empty if it can.
 std::string output_problem(const fs::path& path) {
@@ -42,7 +57,7 @@ std::string output_problem(const fs::path& path) {
     if (fs::exists(s)) {
       if (!fs::is_directory(s)) return dir.string() + " is not a directory";
       if (::access(dir.c_str(), W_OK | X_OK) != 0) return dir.string() + " is not writable";
-      return {};
+      return cannot_make_directory_in(dir);
     }
     if (dir == ".") return {};
     dir = dir.parent_path();
