@@ -113,6 +113,48 @@ def antslam(args, *cmd):
     return run_program(args.antslam, *cmd)
 
 
+def ranks_option(p):
+    """--ranks K: the experiment's independent antslam runs as one MPI job of K ranks
+    (run_batch), or one after the other (1, the default)."""
+    p.add_argument("--ranks", type=integer_at_least(1), default=1,
+                   help="run the independent antslam runs over K MPI ranks with "
+                        "`mpirun -np K antslam batch` (1: one after the other, no MPI)")
+
+
+def mpirun(ranks):
+    """The Open MPI launcher for `ranks` processes: -q keeps its notices off stderr;
+    --allow-run-as-root only as root, --oversubscribe only for more ranks than cores."""
+    cmd = ["mpirun", "-q", "-np", str(ranks)]
+    if os.geteuid() == 0:
+        cmd.append("--allow-run-as-root")
+    if ranks > (os.cpu_count() or 1):
+        cmd.append("--oversubscribe")
+    return cmd
+
+
+def run_batch(args, jobs, name="jobs"):
+    """Runs independent antslam command lines (lists of arguments, without the program): with
+    --ranks 1 one after the other as antslam() does, else as `mpirun -np K antslam batch` (job j
+    on rank j % K, OUT/NAME.txt the jobs, OUT/NAME-logs/ their stdout). The outputs are the
+    same either way; a failing job stops the experiment with one line. Returns the jobs' stdout,
+    in order."""
+    jobs = [[str(a) for a in job] for job in jobs]
+    if args.ranks == 1 or not jobs:
+        return [antslam(args, *job) for job in jobs]
+    for job in jobs:
+        if any(not a or any(c.isspace() for c in a) for a in job):
+            sys.exit(f"antslam batch: a job argument is empty or holds a space: {' '.join(job)}")
+    path = os.path.join(args.out, name + ".txt")
+    write_text(path, "".join(" ".join(job) + "\n" for job in jobs))
+    logs = os.path.join(args.out, name + "-logs")
+    run_program(*mpirun(args.ranks), args.antslam, "batch", path, "--log-dir", logs)
+    out = []
+    for line in range(1, len(jobs) + 1):
+        with open(os.path.join(logs, f"line-{line}.out")) as f:
+            out.append(f.read())
+    return out
+
+
 def load_average():
     with open("/proc/loadavg") as f:
         return float(f.read().split()[0])
