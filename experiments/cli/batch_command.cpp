@@ -2,8 +2,8 @@
 // an MPI run (job j on rank j % ranks; in one process, one after the other). Each job runs
 // in-process on its rank alone, as `antslam <line>` would: it writes its own outputs and its
 // stdout is kept (printed by rank 0 in job order, or written to --log-dir). A failing job ends
-// the rank's share; once every rank has finished, the run fails with one line naming the job's
-// line (and the rank).
+// the rank's share (with --keep-going the rank goes on); once every rank has finished, the run
+// fails with one line naming the job's line (and the rank).
 
 #include <CLI/CLI.hpp>
 
@@ -23,6 +23,7 @@
 #include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "dist/byte_stream.hpp"
+#include "dist/outcome.hpp"
 
 namespace antslam::cli {
 
@@ -31,6 +32,13 @@ namespace {
 struct BatchOptions {
   std::string jobs;
   std::string log_dir;
+  bool keep_going = false;
+};
+
+/// What a job left: its stdout, and how it ended (its failure names the jobs file and line).
+struct JobLog {
+  std::string out;
+  dist::Outcome outcome;
 };
 
 /// One line of the jobs file: an antslam command line, split at whitespace.
@@ -112,60 +120,90 @@ std::string capture_stdout(F&& f) {
   }
 }
 
-/// Runs one job on this rank alone, as the antslam program runs its command line; returns its
-/// stdout. A failure names the job's line.
-std::string run_job(const Job& job, const std::string& jobs_file) {
+/// Runs one job on this rank alone, as the antslam program runs its command line. A failure
+/// names the job's line; it is thrown, or with `keep_going` returned.
+JobLog run_job(const Job& job, const std::string& jobs_file, bool keep_going) {
   const SingleProcessScope alone;
   std::vector<std::string> args{"antslam"};
   args.insert(args.end(), job.args.begin(), job.args.end());
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   try {
-    return capture_stdout([&] {
-      CLI::App app{"antslam"};
-      add_commands(app);
-      try {
-        app.parse(static_cast<int>(argv.size()), argv.data());
-      } catch (const CLI::Success& e) {
-        app.exit(e);  // --help
-      } catch (const CLI::ParseError& e) {
-        throw UsageError(one_line(e.what()));
-      }
-    });
+    return {capture_stdout([&] {
+              CLI::App app{"antslam"};
+              add_commands(app);
+              try {
+                app.parse(static_cast<int>(argv.size()), argv.data());
+              } catch (const CLI::Success& e) {
+                app.exit(e);  // --help
+              } catch (const CLI::ParseError& e) {
+                throw UsageError(one_line(e.what()));
+              }
+            }),
+            {}};
   } catch (...) {
     const Failure failure = failure_of(std::current_exception());
-    throw_as(failure, jobs_file + ":" + std::to_string(job.line) + ": " + failure.message);
+    const std::string message = jobs_file + ":" + std::to_string(job.line) + ": " + failure.message;
+    if (!keep_going) throw_as(failure, message);
+    return {{}, {true, static_cast<int>(failure.status), message}};
   }
 }
 
-std::filesystem::path log_path(const BatchOptions& o, const Job& job) {
-  return std::filesystem::path(o.log_dir) / ("line-" + std::to_string(job.line) + ".out");
+std::filesystem::path log_path(const BatchOptions& o, const Job& job, const char* extension) {
+  return std::filesystem::path(o.log_dir) / ("line-" + std::to_string(job.line) + extension);
 }
 
 void run(const BatchOptions& o) {
   const std::vector<Job> jobs = read_jobs(o.jobs);
   OutputFiles outputs;
   if (!o.log_dir.empty())
-    for (const Job& job : jobs) outputs.add(log_path(o, job));
-  const std::vector<std::string> logs = farm<std::string>(
-      command_world(), jobs.size(),
+    for (const Job& job : jobs) {
+      outputs.add(log_path(o, job, ".out"));
+      if (o.keep_going) outputs.add(log_path(o, job, ".err"));
+    }
+  dist::Communicator& world = command_world();
+  const std::vector<JobLog> logs = farm<JobLog>(
+      world, jobs.size(),
       [&](std::span<const std::size_t> share) {
-        std::vector<std::string> out;
-        for (const std::size_t j : share) out.push_back(run_job(jobs[j], o.jobs));
+        std::vector<JobLog> out;
+        for (const std::size_t j : share) out.push_back(run_job(jobs[j], o.jobs, o.keep_going));
         return out;
       },
-      [](dist::ByteWriter& out, const std::string& log) { out.text(log); },
-      [](dist::ByteReader& in) { return in.text(); });
+      [](dist::ByteWriter& out, const JobLog& log) {
+        out.text(log.out);
+        dist::write(out, log.outcome);
+      },
+      [](dist::ByteReader& in) {
+        JobLog log{in.text(), {}};
+        log.outcome = dist::read_outcome(in);
+        return log;
+      });
+  std::vector<std::size_t> failed;
+  for (std::size_t j = 0; j < jobs.size(); ++j)
+    if (logs[j].outcome.failed) failed.push_back(j);
   if (o.log_dir.empty()) {
     for (std::size_t j = 0; j < jobs.size(); ++j)
       std::printf("== %s:%zu: %s\n%s", o.jobs.c_str(), jobs[j].line, jobs[j].text().c_str(),
-                  logs[j].c_str());
-    return;
+                  logs[j].out.c_str());
+  } else {
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      outputs.write(log_path(o, jobs[j], ".out"), logs[j].out);
+      if (logs[j].outcome.failed)
+        outputs.write(log_path(o, jobs[j], ".err"),
+                      "antslam: error: " + logs[j].outcome.message + "\n");
+    }
+    outputs.commit();
+    std::printf("%zu jobs done; their output in %s/line-<line>.out\n", jobs.size(),
+                o.log_dir.c_str());
   }
-  for (std::size_t j = 0; j < jobs.size(); ++j) outputs.write(log_path(o, jobs[j]), logs[j]);
-  outputs.commit();
-  std::printf("%zu jobs done; their output in %s/line-<line>.out\n", jobs.size(),
-              o.log_dir.c_str());
+  if (failed.empty()) return;
+  // --keep-going: every rank holds every job's outcome, so every rank stops here alike, naming
+  // the first failed job and the rank that ran it.
+  dist::Outcome first = logs[failed.front()].outcome;
+  if (failed.size() > 1)
+    first.message += " (and " + std::to_string(failed.size() - 1) + " more failed job" +
+                     (failed.size() > 2 ? "s" : "") + ")";
+  throw dist::RankFailure(failed.front() % world.size(), first);
 }
 
 }  // namespace
@@ -181,6 +219,10 @@ void add_batch_command(CLI::App& app) {
   cmd->add_option("--log-dir", o->log_dir,
                   "write each job's stdout to DIR/line-<line>.out instead of printing them all "
                   "in job order");
+  cmd->add_flag("--keep-going", o->keep_going,
+                "run every job even after a failure (with --log-dir, a failed job's error line "
+                "goes to DIR/line-<line>.err); the batch still fails, naming the first failed "
+                "job");
   cmd->callback([o] { run(*o); });
 }
 

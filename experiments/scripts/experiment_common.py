@@ -3,6 +3,7 @@ program and reading what `antslam optimize` writes, the machine's load, statisti
 median, the mean of step functions over trials), CSV, Markdown and PNG output written atomically,
 and --publish. Run the scripts with /usr/bin/python3 (Debian's matplotlib)."""
 import argparse
+import concurrent.futures
 import csv
 import json
 import math
@@ -132,26 +133,55 @@ def mpirun(ranks):
     return cmd
 
 
-def run_batch(args, jobs, name="jobs"):
+def run_batch(args, jobs, name="jobs", keep_going=False, parallel=1):
     """Runs independent antslam command lines (lists of arguments, without the program): with
-    --ranks 1 one after the other as antslam() does, else as `mpirun -np K antslam batch` (job j
-    on rank j % K, OUT/NAME.txt the jobs, OUT/NAME-logs/ their stdout). The outputs are the
-    same either way; a failing job stops the experiment with one line. Returns the jobs' stdout,
-    in order."""
+    --ranks 1 as antslam() does, `parallel` at a time, else as `mpirun -np K antslam batch` (job
+    j on rank j % K, OUT/NAME.txt the jobs, OUT/NAME-logs/ their stdout). The outputs are the
+    same either way. Returns the jobs' stdout in order; a failing job stops the experiment with
+    one line, or with keep_going every job runs and each gives (stdout, None) or (None, the
+    line antslam() would have stopped with)."""
     jobs = [[str(a) for a in job] for job in jobs]
+
+    def one(job):
+        if not keep_going:
+            return antslam(args, *job)
+        try:
+            return antslam(args, *job), None
+        except SystemExit as failure:
+            return None, str(failure).splitlines()[-1]
+
     if args.ranks == 1 or not jobs:
-        return [antslam(args, *job) for job in jobs]
+        with concurrent.futures.ThreadPoolExecutor(max_workers=parallel) as pool:
+            return list(pool.map(one, jobs))
     for job in jobs:
         if any(not a or any(c.isspace() for c in a) for a in job):
             sys.exit(f"antslam batch: a job argument is empty or holds a space: {' '.join(job)}")
     path = os.path.join(args.out, name + ".txt")
     write_text(path, "".join(" ".join(job) + "\n" for job in jobs))
     logs = os.path.join(args.out, name + "-logs")
-    run_program(*mpirun(args.ranks), args.antslam, "batch", path, "--log-dir", logs)
+    shutil.rmtree(logs, ignore_errors=True)  # so that only this batch's logs are read
+    cmd = [*mpirun(args.ranks), args.antslam, "batch", path, "--log-dir", logs,
+           *(["--keep-going"] if keep_going else [])]
+    if not keep_going:
+        run_program(*cmd)
+    else:
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0 and not os.path.exists(os.path.join(logs, "line-1.out")):
+            run_program(*cmd)  # the batch itself failed: stop with its line
     out = []
-    for line in range(1, len(jobs) + 1):
+    for line, job in enumerate(jobs, 1):
         with open(os.path.join(logs, f"line-{line}.out")) as f:
-            out.append(f.read())
+            stdout = f.read()
+        if not keep_going:
+            out.append(stdout)
+            continue
+        error = os.path.join(logs, f"line-{line}.err")
+        if os.path.exists(error):
+            with open(error) as f:  # the job's own line, without the batch's "JOBS:LINE: "
+                message = f.read().strip().replace(f"error: {path}:{line}: ", "error: ", 1)
+            out.append((None, f"failed: {args.antslam} {' '.join(job)}: {message}"))
+        else:
+            out.append((stdout, None))
     return out
 
 
