@@ -1,5 +1,5 @@
 # Runs `antslam` with ARGS ('|'-separated) and checks the outcome:
-#   EXPECT=error : non-zero exit and stderr matching STDERR_REGEX; with ONE_LINE, stderr is
+#   EXPECT=error : non-zero exit (STATUS, if set) and stderr matching STDERR_REGEX; with ONE_LINE, stderr is
 #                  exactly one line "antslam: error: ..."; with ABSENT=a,b,..., none of those
 #                  files exists afterwards (they are removed first: nothing was written)
 #   EXPECT=ok    : exit 0, stdout matching STDOUT_REGEX (and not STDOUT_NOT_REGEX, if set), and
@@ -17,6 +17,9 @@ execute_process(COMMAND "${ANTSLAM}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE 
 if(EXPECT STREQUAL "error")
   if(rc EQUAL 0)
     message(FATAL_ERROR "expected a non-zero exit, got 0; stdout:\n${out}")
+  endif()
+  if(DEFINED STATUS AND NOT rc EQUAL STATUS)
+    message(FATAL_ERROR "expected exit status ${STATUS}, got ${rc}; stderr:\n${err}")
   endif()
   if(NOT err MATCHES "${STDERR_REGEX}")
     message(FATAL_ERROR "stderr does not match '${STDERR_REGEX}':\n${err}")

@@ -27,6 +27,7 @@ void add_commands(CLI::App& app) {
   add_fragment_set_command(app);
   add_outliers_command(app);
   add_robust_command(app);
+  add_batch_command(app);
 }
 
 }  // namespace antslam::cli

@@ -24,5 +24,6 @@ void add_tinyslam_command(CLI::App& app);
 void add_fragment_set_command(CLI::App& app);
 void add_outliers_command(CLI::App& app);
 void add_robust_command(CLI::App& app);
+void add_batch_command(CLI::App& app);
 
 }  // namespace antslam::cli

@@ -1,32 +1,96 @@
 // antslam: the command-line entry point and its error boundary. Every failure ends the program
 // with one line "antslam: error: ..." on stderr and the exit status of its kind (cli/errors.hpp,
 // README "Exit status"); SIGINT and SIGTERM remove temporary files first (cli/interrupts.hpp).
+// Under an MPI launcher every rank runs the same command line: rank 0 alone prints (the other
+// ranks' stdout goes to /dev/null) and writes outputs (cli/output_files.hpp); a failure on any
+// rank ends the run on every rank, and rank 0 prints "antslam: error: rank R: <message>" for the
+// lowest failed rank R, every rank exiting with that failure's status.
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <optional>
 
 #include "cli/errors.hpp"
 #include "cli/interrupts.hpp"
 #include "commands.hpp"
+#include "dist/communicator.hpp"
+#include "dist/outcome.hpp"
 
-int main(int argc, char** argv) {
-  using antslam::cli::ExitStatus;
-  antslam::cli::handle_interrupts();
+namespace {
+
+using antslam::cli::ExitStatus;
+using antslam::cli::Failure;
+
+/// Parses and runs the command line: its failure, if it fails on this rank alone.
+std::optional<Failure> run(int argc, char** argv) {
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
-  antslam::cli::Failure failure;
   try {
     antslam::cli::add_commands(app);
     app.parse(argc, argv);
-    return static_cast<int>(ExitStatus::ok);
+    return std::nullopt;
   } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help
+    app.exit(e);  // --help
+    return std::nullopt;
   } catch (const CLI::ParseError& e) {
-    failure = {antslam::cli::one_line(e.what()), ExitStatus::usage};
+    return Failure{antslam::cli::one_line(e.what()), ExitStatus::usage};
+  } catch (const antslam::dist::RankFailure&) {
+    throw;  // already known to every rank
   } catch (...) {
-    failure = antslam::cli::failure_of(std::current_exception());
+    return antslam::cli::failure_of(std::current_exception());
   }
-  std::fprintf(stderr, "antslam: error: %s\n", failure.message.c_str());
-  return static_cast<int>(failure.status);
+}
+
+/// Under an MPI launcher, the end of a failed run: rank 0 prints the line, and every rank ends
+/// MPI and exits with the status while interrupts are held back. The launcher ends the other
+/// ranks as soon as one exits with an error; a rank ended that way would otherwise report an
+/// interrupt (cli/interrupts.hpp), and rank 0 could be ended before its line is out.
+[[noreturn]] void end_failed_run(std::optional<antslam::dist::MpiSession>& session,
+                                 const antslam::dist::RankFailure& failure) {
+  antslam::cli::without_interrupts([&] {
+    if (antslam::dist::world().is_root())
+      std::fprintf(stderr, "antslam: error: %s\n", failure.what());
+    session.reset();
+    std::fflush(nullptr);
+    std::_Exit(failure.status());
+  });
+  std::_Exit(failure.status());  // not reached: without_interrupts runs its function
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  antslam::cli::handle_interrupts();
+  std::optional<antslam::dist::MpiSession> session(std::in_place, argc, argv);
+  antslam::dist::Communicator& world = antslam::dist::world();
+  if (!world.is_root() && std::freopen("/dev/null", "w", stdout) == nullptr)
+    antslam::dist::MpiSession::abort_run(static_cast<int>(ExitStatus::runtime));
+  std::optional<Failure> failure;
+  try {
+    failure = run(argc, argv);
+  } catch (const antslam::dist::RankFailure& e) {
+    // Every rank stopped at the same collective step with the same failure: no rank is left
+    // waiting, so it is reported without the final gathering below.
+    if (world.size() == 1) {
+      std::fprintf(stderr, "antslam: error: %s\n", e.cause().c_str());
+      return e.status();
+    }
+    end_failed_run(session, e);
+  }
+  if (world.size() == 1) {
+    if (!failure) return 0;
+    std::fprintf(stderr, "antslam: error: %s\n", failure->message.c_str());
+    return static_cast<int>(failure->status);
+  }
+  // Every rank reaches this point, whether its command failed or not.
+  antslam::dist::Outcome mine;
+  if (failure) mine = {true, static_cast<int>(failure->status), failure->message};
+  try {
+    antslam::dist::gather_outcomes(world, mine);
+  } catch (const antslam::dist::RankFailure& e) {
+    end_failed_run(session, e);
+  }
+  return 0;
 }

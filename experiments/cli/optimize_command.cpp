@@ -13,13 +13,16 @@
 #include <thread>
 #include <vector>
 
+#include "cli/command_world.hpp"
 #include "cli/errors.hpp"
+#include "cli/farm.hpp"
 #include "cli/memory.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
 #include "eval/evaluation.hpp"
 #include "optimizer_options.hpp"
+#include "result_bytes.hpp"
 #include "slamgraph/fragment_set_io.hpp"
 #include "slamgraph/g2o.hpp"
 #include "slamgraph/graph_optimize.hpp"
@@ -92,13 +95,16 @@ Subject read_subject(const OptimizeOptions& o) {
   return subject;
 }
 
-/// The trials, with their progress on a terminal (cleared before the summary).
-std::vector<slam::OptimizeResult> run_study(const Subject& subject, const OptimizeOptions& o) {
+/// The trials of `share` (indices of the study's trials), with their progress on a terminal
+/// (cleared before the summary).
+std::vector<slam::OptimizeResult> run_share(const Subject& subject, const OptimizeOptions& o,
+                                            std::span<const std::size_t> share) {
   Progress progress;
   const slam::TrialsObserver finished = [&](std::size_t done) {
     if (o.trials > 1)
-      progress.update("trials finished: " + std::to_string(done) + "/" + std::to_string(o.trials),
-                      done == o.trials);
+      progress.update(
+          "trials finished: " + std::to_string(done) + "/" + std::to_string(share.size()),
+          done == share.size());
   };
   const slam::OptimizeObserver convergence = [&](const slam::ConvergencePoint& p) {
     char line[128];
@@ -106,17 +112,31 @@ std::vector<slam::OptimizeResult> run_study(const Subject& subject, const Optimi
                   static_cast<unsigned long long>(p.iteration), p.best_weight, p.elapsed_s);
     progress.update(line);
   };
-  const slam::TrialSettings trials{o.trials, o.threads, o.s.backend};
+  const slam::TrialSettings trials{o.trials, o.threads, o.s.backend,
+                                   std::vector<std::size_t>(share.begin(), share.end())};
   if (subject.graph)
     return slam::run_trials(*subject.graph, o.input, o.s, o.import, trials, finished, convergence);
   return slam::run_trials(*subject.set, o.s, trials, finished, convergence);
 }
 
+/// Every trial of the study, farmed over the command's processes (cli/farm.hpp).
+std::vector<slam::OptimizeResult> run_study(const Subject& subject, const OptimizeOptions& o) {
+  return farm<slam::OptimizeResult>(
+      command_world(), o.trials,
+      [&](std::span<const std::size_t> share) {
+        return in_context_of(o.input, [&] { return run_share(subject, o, share); });
+      },
+      [](dist::ByteWriter& out, const slam::OptimizeResult& r) { write(out, r); },
+      read_optimize_result);
+}
+
 void print_summary(const slam::StudyResult& r, const Subject& subject, const OptimizeOptions& o) {
-  std::printf("%s on %s (%s): %zu trial%s on %zu thread%s\n",
+  const std::size_t ranks = command_world().size();
+  const std::string on_ranks = ranks == 1 ? "" : std::to_string(ranks) + " ranks x ";
+  std::printf("%s on %s (%s): %zu trial%s on %s%zu thread%s\n",
               std::string(slam::to_string(r.method)).c_str(), o.input.c_str(),
-              subject.size_text().c_str(), r.trials, r.trials == 1 ? "" : "s", o.threads,
-              o.threads == 1 ? "" : "s");
+              subject.size_text().c_str(), r.trials, r.trials == 1 ? "" : "s", on_ranks.c_str(),
+              o.threads, o.threads == 1 ? "" : "s");
   std::printf("  weight (eq. 10)  %.6f +- %.6f  (best %.6f, worst %.6f)\n", r.weight.mean,
               r.weight.std, r.weight.min, r.weight.max);
   std::printf("  chi2             %.6g +- %.6g  (best trial %.6g)\n", r.chi2.mean, r.chi2.std,
@@ -150,8 +170,7 @@ void run(const OptimizeOptions& options) {
                           : slam::reference_frames(*subject.set, o.reference);
   require_memory("--trials " + std::to_string(o.trials) + " (the trials' results)",
                  static_cast<double>(o.trials) * slam::trial_result_bytes(subject.poses()));
-  const std::vector<slam::OptimizeResult> trials =
-      in_context_of(o.input, [&] { return run_study(subject, o); });
+  const std::vector<slam::OptimizeResult> trials = run_study(subject, o);
   slam::StudyResult r = slam::summarize(o.input, o.s, trials);
   if (!subject.reference.empty()) r.error = eval::frames_error(r.best.frames, subject.reference);
 
@@ -188,11 +207,14 @@ void add_optimize_command(CLI::App& app) {
          "fragment-set JSON, or a pose graph (.g2o, .graph): ceres, ceres-robust and nlopt "
          "run on the graph from its vertex poses, the other methods on its fragment chain")
       ->required();
-  cmd->add_option("--trials", o->trials, "independent trials (trial t: seed mix(seed, t))")
+  cmd->add_option("--trials", o->trials,
+                  "independent trials (trial t: seed mix(seed, t)); under mpirun, trial t runs on "
+                  "rank t % ranks")
       ->check(count_in(1, kMaxTrials))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads,
-                  "threads: trials run in parallel (with --trials 1: the ants); 0 = all cores")
+                  "threads (of each rank under mpirun): trials run in parallel (with --trials 1: "
+                  "the ants); 0 = all cores")
       ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   add_optimizer_options(*cmd, o->optimizer);

@@ -1,19 +1,24 @@
 // antslam tsp-experiment: instances x variants x thread counts x seeds under one budget; writes
 // every run to a CSV file and a summary per (instance, variant, threads) as a Markdown table:
-// best/mean/worst length, mean % over the optimum, runs that hit it, mean time to best.
+// best/mean/worst length, mean % over the optimum, runs that hit it, mean time to best. Under
+// mpirun the runs are spread over the ranks and rank 0 writes.
 
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "aco/variant.hpp"
+#include "cli/command_world.hpp"
+#include "cli/farm.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
+#include "result_bytes.hpp"
 #include "tsp/experiment.hpp"
 #include "tsp/tsplib.hpp"
 #include "tsp_options_command.hpp"
@@ -68,16 +73,24 @@ void run(const ExperimentCommand& c) {
   if (!c.markdown_out.empty()) outputs.add(c.markdown_out);
 
   Progress progress;
-  const std::vector<tsp::ExperimentRun> runs =
-      tsp::run_experiment(e, [&](std::size_t index, std::size_t total, const tsp::ExperimentRun& r,
-                                 const aco::IterationReport& report) {
-        std::ostringstream line;
-        line << "run " << index + 1 << "/" << total << "  " << r.instance << ' '
-             << aco::to_string(r.variant) << " t" << r.threads << " seed " << r.seed << "  best "
-             << report.global_best << "  " << std::fixed << std::setprecision(1) << report.elapsed_s
-             << " s";
-        progress.update(line.str());
-      });
+  const auto run_share = [&](std::span<const std::size_t> share) {
+    e.only.emplace(share.begin(), share.end());
+    return tsp::run_experiment(
+        e, [&](std::size_t index, std::size_t total, const tsp::ExperimentRun& r,
+               const aco::IterationReport& report) {
+          std::ostringstream line;
+          line << "run " << index + 1 << "/" << total << "  " << r.instance << ' '
+               << aco::to_string(r.variant) << " t" << r.threads << " seed " << r.seed << "  best "
+               << report.global_best << "  " << std::fixed << std::setprecision(1)
+               << report.elapsed_s << " s";
+          progress.update(line.str());
+        });
+  };
+  // Run i on rank i % ranks (cli/farm.hpp); every run's seed depends on its index only.
+  const std::vector<tsp::ExperimentRun> runs = farm<tsp::ExperimentRun>(
+      command_world(), tsp::run_count(e), run_share,
+      [](dist::ByteWriter& out, const tsp::ExperimentRun& r) { write(out, r); },
+      read_experiment_run);
   progress.clear();
   const std::string& ls = c.algorithm.local_search;
   tsp::write_summary_markdown(std::cout, runs, ls);

@@ -3,6 +3,7 @@ program and reading what `antslam optimize` writes, the machine's load, statisti
 median, the mean of step functions over trials), CSV, Markdown and PNG output written atomically,
 and --publish. Run the scripts with /usr/bin/python3 (Debian's matplotlib)."""
 import argparse
+import concurrent.futures
 import csv
 import json
 import math
@@ -111,6 +112,77 @@ def run_program(*cmd):
 def antslam(args, *cmd):
     """Runs one antslam subcommand (see run_program); returns its stdout."""
     return run_program(args.antslam, *cmd)
+
+
+def ranks_option(p):
+    """--ranks K: the experiment's independent antslam runs as one MPI job of K ranks
+    (run_batch), or one after the other (1, the default)."""
+    p.add_argument("--ranks", type=integer_at_least(1), default=1,
+                   help="run the independent antslam runs over K MPI ranks with "
+                        "`mpirun -np K antslam batch` (1: one after the other, no MPI)")
+
+
+def mpirun(ranks):
+    """The Open MPI launcher for `ranks` processes: -q keeps its notices off stderr;
+    --allow-run-as-root only as root, --oversubscribe only for more ranks than cores."""
+    cmd = ["mpirun", "-q", "-np", str(ranks)]
+    if os.geteuid() == 0:
+        cmd.append("--allow-run-as-root")
+    if ranks > (os.cpu_count() or 1):
+        cmd.append("--oversubscribe")
+    return cmd
+
+
+def run_batch(args, jobs, name="jobs", keep_going=False, parallel=1):
+    """Runs independent antslam command lines (lists of arguments, without the program): with
+    --ranks 1 as antslam() does, `parallel` at a time, else as `mpirun -np K antslam batch` (job
+    j on rank j % K, OUT/NAME.txt the jobs, OUT/NAME-logs/ their stdout). The outputs are the
+    same either way. Returns the jobs' stdout in order; a failing job stops the experiment with
+    one line, or with keep_going every job runs and each gives (stdout, None) or (None, the
+    line antslam() would have stopped with)."""
+    jobs = [[str(a) for a in job] for job in jobs]
+
+    def one(job):
+        if not keep_going:
+            return antslam(args, *job)
+        try:
+            return antslam(args, *job), None
+        except SystemExit as failure:
+            return None, str(failure).splitlines()[-1]
+
+    if args.ranks == 1 or not jobs:
+        with concurrent.futures.ThreadPoolExecutor(max_workers=parallel) as pool:
+            return list(pool.map(one, jobs))
+    for job in jobs:
+        if any(not a or any(c.isspace() for c in a) for a in job):
+            sys.exit(f"antslam batch: a job argument is empty or holds a space: {' '.join(job)}")
+    path = os.path.join(args.out, name + ".txt")
+    write_text(path, "".join(" ".join(job) + "\n" for job in jobs))
+    logs = os.path.join(args.out, name + "-logs")
+    shutil.rmtree(logs, ignore_errors=True)  # so that only this batch's logs are read
+    cmd = [*mpirun(args.ranks), args.antslam, "batch", path, "--log-dir", logs,
+           *(["--keep-going"] if keep_going else [])]
+    if not keep_going:
+        run_program(*cmd)
+    else:
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0 and not os.path.exists(os.path.join(logs, "line-1.out")):
+            run_program(*cmd)  # the batch itself failed: stop with its line
+    out = []
+    for line, job in enumerate(jobs, 1):
+        with open(os.path.join(logs, f"line-{line}.out")) as f:
+            stdout = f.read()
+        if not keep_going:
+            out.append(stdout)
+            continue
+        error = os.path.join(logs, f"line-{line}.err")
+        if os.path.exists(error):
+            with open(error) as f:  # the job's own line, without the batch's "JOBS:LINE: "
+                message = f.read().strip().replace(f"error: {path}:{line}: ", "error: ", 1)
+            out.append((None, f"failed: {args.antslam} {' '.join(job)}: {message}"))
+        else:
+            out.append((stdout, None))
+    return out
 
 
 def load_average():

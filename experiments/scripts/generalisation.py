@@ -4,7 +4,8 @@ corrected log x odometry-noise levels x seeds, and on the raw logs. Writes gener
 (one row per run), table.md (also on stdout) and generalisation.png.
 
     /usr/bin/python3 experiments/scripts/generalisation.py [--quick] [--seeds 3]
-        [--levels 0.5,1,2] [--jobs 2] [--data DIR] [--logs a,b] [--out results/generalisation]
+        [--levels 0.5,1,2] [--jobs 2 | --ranks K] [--data DIR] [--logs a,b]
+        [--out results/generalisation]
         [--map-option=--opt=value ...] [--sweep option=v1,v2,...] [--publish]
 
 Corrected logs (every DATA/laser/corrected/*-corrected.log.gz; DATA is the shared data folder
@@ -28,22 +29,25 @@ for every run above 0.30 m its failure class, the first that applies:
   scan matcher     an alignment of the set is more than 5 sigma from the reference
   missed closure   none of the above: the set does not close enough loops to correct the drift
 
+The runs go stage by stage (noisy logs, maps, evaluations and Ceres, Ceres on the true closures),
+each stage's commands independent of each other: --jobs at a time, or with --ranks K as one
+`mpirun -np K antslam batch --keep-going` (the same files). A run whose command fails is a failed
+run (its error in the CSV); the others go on. Run time: the map's own total (report.json).
+
 --sweep option=v1,v2,... runs the whole benchmark once per value of an `antslam map` option
 and writes lolo.md: leave-one-log-out, for every log the value that gives the lowest mean ATE
 over all the other logs, and that log's own mean ATE with it (a held-out figure) beside its
 mean ATE with each value (training figures).
 """
-import concurrent.futures
 import glob
 import json
 import math
 import os
-import time
 
-from experiment_common import (DATA, ROOT, antslam, check_program, count_option, header,
+from experiment_common import (DATA, ROOT, check_program, count_option, header,
                                integer_at_least, markdown_table, parser, path_length, plt,
-                               progress, read_json, save_csv, save_figure, save_table, stats,
-                               write_text)
+                               progress, ranks_option, read_json, run_batch, save_csv,
+                               save_figure, save_table, stats, write_text)
 
 LEVELS = {0.5: "half", 1.0: "default", 2.0: "double"}
 NOISE = {"--linear-noise": 0.05, "--angular-noise": 0.05, "--drift-noise": 0.01,
@@ -113,17 +117,24 @@ def classify(row):
     return "missed closure"
 
 
-def evaluate(args, estimate, reference, work, *extra):
-    out = os.path.join(work, os.path.basename(estimate) + ".eval.json")
-    antslam(args, "eval", estimate, reference, "--json", out, *extra)
-    return read_json(out)
+def eval_job(estimate, reference, work, *extra):
+    """The `antslam eval` job of a trajectory; its result: read_json(eval_path(...))."""
+    return ["eval", estimate, reference, "--json", eval_path(estimate, work), *extra]
 
 
-def ceres_ate(args, fragment_set, reference, work, name):
+def eval_path(estimate, work):
+    return os.path.join(work, os.path.basename(estimate) + ".eval.json")
+
+
+def ceres_job(fragment_set, work, name):
+    """Ceres on a fragment set: the `antslam optimize` job, writing WORK/NAME.tum."""
     prefix = os.path.join(work, name)
-    antslam(args, "optimize", fragment_set, "--method", "ceres", "-o", prefix, "--tum-out",
-            prefix + ".tum")
-    return evaluate(args, prefix + ".tum", reference, work)["ate"]["translation_m"]["rmse"]
+    return ["optimize", fragment_set, "--method", "ceres", "-o", prefix, "--tum-out",
+            prefix + ".tum"]
+
+
+def ate_of(estimate, work):
+    return read_json(eval_path(estimate, work))["ate"]["translation_m"]["rmse"]
 
 
 def without_wrong_closures(fragment_set, check, path):
@@ -140,75 +151,149 @@ def without_wrong_closures(fragment_set, check, path):
     return path
 
 
-def run_one(args, run):
-    """One benchmark run; returns its CSV row (a dict)."""
-    level = run["level"]
-    tag = f"{run['log']}-{LEVELS.get(level, level)}-{run['seed']}"
-    work = os.path.join(args.out, "runs", *([run["sweep"]] if run.get("sweep") else []), tag)
-    os.makedirs(work, exist_ok=True)
-    row = {c: "" for c in COLUMNS}
-    row.update(log=run["log"], level=LEVELS.get(level, level), seed=run["seed"],
-               sweep=run.get("sweep", ""))
-    start = time.time()
-    try:
+class Run:
+    """One benchmark run: its CSV row (a dict), where its files go, and its commands stage by
+    stage; a failed command fills row["error"] and ends the run (the benchmark goes on)."""
+
+    def __init__(self, args, run):
+        level = run["level"]
+        tag = f"{run['log']}-{LEVELS.get(level, level)}-{run['seed']}"
+        self.run = run
+        self.work = os.path.join(args.out, "runs", *([run["sweep"]] if run.get("sweep") else []),
+                                 tag)
+        os.makedirs(self.work, exist_ok=True)
+        self.row = {c: "" for c in COLUMNS}
+        self.row.update(log=run["log"], level=LEVELS.get(level, level), seed=run["seed"],
+                        sweep=run.get("sweep", ""))
         if "corrected" in run:
-            noise = [x for flag, value in NOISE.items() for x in (flag, value * level)]
-            antslam(args, "simulate-odometry", run["corrected"], "--out", work, "--seed",
-                    run["seed"], *noise)
-            sim = read_json(os.path.join(work, "report.json"))
-            row.update(odometry_ate_m=sim["odometry_ate_rmse_m"], path_m=sim["path_length_m"])
-            log, reference, relations, options = (os.path.join(work, "log.clf"),
-                                                  os.path.join(work, "reference.tum"), None, [])
+            self.log = os.path.join(self.work, "log.clf")
+            self.reference, self.relations, self.options = (
+                os.path.join(self.work, "reference.tum"), None, [])
         else:
-            log, reference, relations, options = (run["raw"], run["reference"], run["relations"],
-                                                  run["options"])
-        mapped = os.path.join(work, "map")
-        start = time.time()
-        antslam(args, "map", log, "--out", mapped, "--threads", 1, *options,
-                *(["--reference", reference] if reference else []),
-                *(["--no-maps"] if not args.maps else []), *args.map_option,
-                *(["--trials", 2, "--iterations", 100] if args.quick else []),
-                *run.get("sweep_options", []))
-        row["seconds"] = time.time() - start
-        report = read_json(os.path.join(mapped, "report.json"))
+            self.log, self.reference, self.relations, self.options = (
+                run["raw"], run["reference"], run["relations"], run["options"])
+        self.mapped = os.path.join(self.work, "map")
+        self.fragment_set = os.path.join(self.mapped, "fragment-set.json")
+        self.check = None
+        self.true_closures = None  # the set without its wrong closures, if Ceres runs on it
+
+    def simulate_jobs(self, args):
+        if "corrected" not in self.run:
+            return []
+        noise = [x for flag, value in NOISE.items() for x in (flag, value * self.run["level"])]
+        return [["simulate-odometry", self.run["corrected"], "--out", self.work, "--seed",
+                 self.run["seed"], *noise]]
+
+    def simulated(self):
+        if "corrected" in self.run:
+            sim = read_json(os.path.join(self.work, "report.json"))
+            self.row.update(odometry_ate_m=sim["odometry_ate_rmse_m"],
+                            path_m=sim["path_length_m"])
+
+    def map_jobs(self, args):
+        return [["map", self.log, "--out", self.mapped, "--threads", 1, *self.options,
+                 *(["--reference", self.reference] if self.reference else []),
+                 *(["--no-maps"] if not args.maps else []), *args.map_option,
+                 *(["--trials", 2, "--iterations", 100] if args.quick else []),
+                 *self.run.get("sweep_options", [])]]
+
+    def mapped_done(self):
+        report = read_json(os.path.join(self.mapped, "report.json"))
         closures = report["closures"]
         counts = report["frontend"]["stats"]
-        row.update(scans=report["scans"], closures=len(closures),
-                   closures_within_2_sigma=sum(c["within_2_sigma"] for c in closures),
-                   fallbacks=report["verdict"]["odometry_fallbacks"],
-                   recovered=counts["recovered_scans"], doubtful=report["verdict"]["doubtful"],
-                   closures_distrusted=len(report["optimization"]["closing"].get("distrusted", [])))
-        if reference:
-            fragment_set = os.path.join(mapped, "fragment-set.json")
-            e = evaluate(args, os.path.join(mapped, "trajectory.tum"), reference, work,
-                         "--fragment-set", fragment_set,
-                         *(["--relations", relations] if relations else []))
-            check = e["fragment_set"]
-            row.update(ate_m=e["ate"]["translation_m"]["rmse"],
-                       closures_checked=check["closures_checked"],
-                       closures_correct=check["closures_correct"], revisits=check["revisits"],
-                       revisits_closed=check["revisits_closed"],
-                       alignments_beyond_3_sigma=check["alignments_beyond_3_sigma"],
-                       alignment_mahalanobis_max=check["alignment_mahalanobis_max"])
-            if e.get("relations"):
-                row["relations_m"] = e["relations"]["translation_m"]["mean"]
-            row["scan_matcher_ate_m"] = evaluate(
-                args, os.path.join(mapped, "trajectory-scan-matcher.tum"), reference,
-                work)["ate"]["translation_m"]["rmse"]
-            row["ceres_ate_m"] = ceres_ate(args, fragment_set, reference, work, "ceres")
-            if row["ate_m"] > TARGET:
-                true_set = without_wrong_closures(fragment_set, check,
-                                                  os.path.join(work, "true-closures.json"))
-                if true_set:
-                    row["ceres_true_closures_ate_m"] = ceres_ate(args, true_set, reference, work,
-                                                                 "ceres-true-closures")
-            if "corrected" not in run:
-                row["path_m"] = path_length(reference)
-    except SystemExit as failure:  # antslam failed: the run is a failure, the benchmark goes on
-        row["error"] = str(failure).splitlines()[-1]
-        row["seconds"] = row["seconds"] or time.time() - start
-    row["failure_class"] = classify(row) if not row["error"] else "run failed"
-    return row
+        self.row.update(
+            seconds=report["times"]["total_s"], scans=report["scans"], closures=len(closures),
+            closures_within_2_sigma=sum(c["within_2_sigma"] for c in closures),
+            fallbacks=report["verdict"]["odometry_fallbacks"],
+            recovered=counts["recovered_scans"], doubtful=report["verdict"]["doubtful"],
+            closures_distrusted=len(report["optimization"]["closing"].get("distrusted", [])))
+
+    def evaluate_jobs(self, args):
+        if not self.reference:
+            return []
+        return [eval_job(os.path.join(self.mapped, "trajectory.tum"), self.reference, self.work,
+                         "--fragment-set", self.fragment_set,
+                         *(["--relations", self.relations] if self.relations else [])),
+                eval_job(os.path.join(self.mapped, "trajectory-scan-matcher.tum"),
+                         self.reference, self.work),
+                ceres_job(self.fragment_set, self.work, "ceres")]
+
+    def evaluated(self):
+        if not self.reference:
+            return
+        e = read_json(eval_path(os.path.join(self.mapped, "trajectory.tum"), self.work))
+        self.check = e["fragment_set"]
+        self.row.update(ate_m=e["ate"]["translation_m"]["rmse"],
+                        closures_checked=self.check["closures_checked"],
+                        closures_correct=self.check["closures_correct"],
+                        revisits=self.check["revisits"],
+                        revisits_closed=self.check["revisits_closed"],
+                        alignments_beyond_3_sigma=self.check["alignments_beyond_3_sigma"],
+                        alignment_mahalanobis_max=self.check["alignment_mahalanobis_max"])
+        if e.get("relations"):
+            self.row["relations_m"] = e["relations"]["translation_m"]["mean"]
+        self.row["scan_matcher_ate_m"] = ate_of(
+            os.path.join(self.mapped, "trajectory-scan-matcher.tum"), self.work)
+        if "corrected" not in self.run:
+            self.row["path_m"] = path_length(self.reference)
+
+    def ceres_jobs(self, args):
+        if not self.reference:
+            return []
+        jobs = [eval_job(os.path.join(self.work, "ceres.tum"), self.reference, self.work)]
+        if self.row["ate_m"] > TARGET:
+            self.true_closures = without_wrong_closures(
+                self.fragment_set, self.check, os.path.join(self.work, "true-closures.json"))
+        if self.true_closures:
+            jobs.append(ceres_job(self.true_closures, self.work, "ceres-true-closures"))
+        return jobs
+
+    def ceres_done(self):
+        if self.reference:
+            self.row["ceres_ate_m"] = ate_of(os.path.join(self.work, "ceres.tum"), self.work)
+
+    def true_closures_jobs(self, args):
+        if not self.true_closures:
+            return []
+        return [eval_job(os.path.join(self.work, "ceres-true-closures.tum"), self.reference,
+                         self.work)]
+
+    def true_closures_done(self):
+        if self.true_closures:
+            self.row["ceres_true_closures_ate_m"] = ate_of(
+                os.path.join(self.work, "ceres-true-closures.tum"), self.work)
+
+
+STAGES = [("simulate", Run.simulate_jobs, Run.simulated), ("map", Run.map_jobs, Run.mapped_done),
+          ("evaluate", Run.evaluate_jobs, Run.evaluated), ("ceres", Run.ceres_jobs,
+                                                            Run.ceres_done),
+          ("true-closures", Run.true_closures_jobs, Run.true_closures_done)]
+
+
+def run_all(args, todo):
+    """Every run, stage by stage: each stage's commands of every run still going are
+    independent of each other, one batch (run_batch: --jobs at a time, or over --ranks MPI
+    ranks); a run whose command fails keeps its error and stops there. Returns the rows."""
+    runs = [Run(args, r) for r in todo]
+    for stage, jobs_of, done in STAGES:
+        going = [r for r in runs if not r.row["error"]]
+        pending = [(r, job) for r in going for job in jobs_of(r, args)]
+        progress(f"{stage}: {len(pending)} commands of {len(going)} runs")
+        results = run_batch(args, [job for _, job in pending], stage, keep_going=True,
+                            parallel=args.jobs)
+        for (r, _), (_, error) in zip(pending, results):
+            r.row["error"] = r.row["error"] or (error or "")
+        for r in going:
+            if not r.row["error"]:
+                done(r)
+    for r in runs:
+        r.row["failure_class"] = classify(r.row) if not r.row["error"] else "run failed"
+        row = r.row
+        progress(f"{row['log']} {row['level']} seed {row['seed']} {row['sweep']}: "
+                 f"ATE {fmt(row['ate_m'])} m (Ceres {fmt(row['ceres_ate_m'])}), closures "
+                 f"{row['closures_within_2_sigma']} of {row['closures']} within 2 sigma, "
+                 f"{fmt(row['seconds'], 1)} s {row['failure_class']} {row['error']}")
+    return [r.row for r in runs]
 
 
 def fmt(value, digits=3):
@@ -320,7 +405,8 @@ def main():
     p.add_argument("--levels", default=None,
                    help="noise levels as multiples of the default noise (0.5,1,2; quick 1)")
     p.add_argument("--jobs", type=integer_at_least(1), default=2,
-                   help="runs at the same time (each on one thread)")
+                   help="commands at the same time (each on one thread) without --ranks")
+    ranks_option(p)
     p.add_argument("--data", default=default_data(), help="data folder (laser/, laser/corrected/)")
     p.add_argument("--logs", default=None, help="comma-separated subset of the logs")
     p.add_argument("--maps", action="store_true", help="also draw the maps (slower)")
@@ -346,16 +432,7 @@ def main():
         if not option or not listed:
             p.error("--sweep: expected option=v1,v2,...")
         todo = [dict(r, sweep=v, sweep_options=[f"--{option}", v]) for v in values for r in todo]
-    rows = []
-    with concurrent.futures.ProcessPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(run_one, args, r) for r in todo]
-        for n, future in enumerate(concurrent.futures.as_completed(futures), 1):
-            r = future.result()
-            rows.append(r)
-            progress(f"{n}/{len(todo)} {r['log']} {r['level']} seed {r['seed']} {r['sweep']}: "
-                     f"ATE {fmt(r['ate_m'])} m (Ceres {fmt(r['ceres_ate_m'])}), closures "
-                     f"{r['closures_within_2_sigma']} of {r['closures']} within 2 sigma, "
-                     f"{fmt(r['seconds'], 1)} s {r['failure_class']} {r['error']}")
+    rows = run_all(args, todo)
     rows.sort(key=lambda r: (r["sweep"], r["level"] == "raw", r["log"], str(r["level"]), r["seed"]))
     save_csv(args, "generalisation", COLUMNS, [[r[c] for c in COLUMNS] for r in rows])
     text = (f"ATE RMSE in metres against the reference; noise levels multiply every "

@@ -5,7 +5,9 @@ For every pose graph x outlier count x kind x seed: `antslam outliers` adds the 
 (Suenderhauf & Protzel 2012), then `antslam robust` runs every method on the spoiled graph and
 reports precision, recall, ATE against the outlier-free least-squares solution (and against the
 ground truth where the graph has one) and time. Seeds are the outer loop, so a run stopped early
-(or resumed with --resume) holds the whole grid for the seeds it finished.
+(or resumed with --resume) holds the whole grid for the seeds it finished. Per seed, the
+spoiled graphs are made first, then every method runs on them: with --ranks K each stage is one
+`mpirun -np K antslam batch` (the same files; each run still uses --threads threads).
 
 Writes OUT/robust.csv (one row per run), OUT/table.md (means over the seeds) and one figure per
 graph, OUT/robust-GRAPH.png: precision, recall and ATE against the outlier count, one column per
@@ -15,8 +17,8 @@ import os
 
 from experiment_common import (DATA, antslam, check_program, count_option, header,
                                integer_at_least, load_average, markdown_table, parser, plt,
-                               progress, read_csv, read_json, save_csv, save_figure, save_table,
-                               stats)
+                               progress, ranks_option, read_csv, read_json, run_batch, save_csv,
+                               save_figure, save_table, stats)
 
 METHODS = ["ls", "cauchy", "dcs", "gnc", "pcm-exact", "pcm-aco"]
 KINDS = ["random", "local", "random-group", "local-group"]
@@ -40,6 +42,7 @@ def options():
                    help=f"back ends ({METHODS})")
     count_option(p, "--seeds", "seeds 1..N per count and kind", 10, 1)
     count_option(p, "--threads", "threads of the consistency and the ants", 2, 2)
+    ranks_option(p)
     p.add_argument("--resume", action="store_true", help="keep the runs already in OUT/runs")
     args = p.parse_args()
     defaults = QUICK if args.quick else FULL
@@ -52,31 +55,45 @@ def options():
     return args
 
 
-def run_one(args, graph, kind, count, seed, reference, ground_truth):
-    """The rows of one spoiled graph, every method (skipped where --resume finds them)."""
-    name = f"{graph}-{kind}-{count}-{seed}"
-    source = os.path.join(DATA, "posegraphs", graph + ".g2o")
-    spoiled = os.path.join(args.out, "graphs", name + ".g2o")
+def spoil(args, graph, kind, count, seed):
+    """The spoiled graph of one case (path) and the `antslam outliers` job that makes it."""
+    spoiled = os.path.join(args.out, "graphs", f"{graph}-{kind}-{count}-{seed}.g2o")
+    return spoiled, ["outliers", os.path.join(DATA, "posegraphs", graph + ".g2o"), "--count",
+                     count, "--kind", kind, "--seed", seed, "-o", spoiled]
+
+
+def run_cases(args, cases):
+    """The rows of the cases (graph, kind, count, seed, reference, ground truth), every method
+    (skipping the runs --resume finds): first every spoiled graph, then every method on them,
+    each stage one batch of independent runs (run_batch: over --ranks MPI ranks)."""
+    todo = []  # (spoiled graph, its outliers job, method, output prefix, refs)
+    for graph, kind, count, seed, reference, ground_truth in cases:
+        spoiled, outliers = spoil(args, graph, kind, count, seed)
+        refs = ["--reference", reference] + (["--reference", ground_truth] if ground_truth
+                                             else [])
+        for method in args.methods:
+            prefix = os.path.join(args.out, "runs", f"{graph}-{kind}-{count}-{seed}-{method}")
+            if not (args.resume and os.path.exists(prefix + ".json")):
+                todo.append((spoiled, outliers, method, prefix, refs))
+    needed = {t[0]: t[1] for t in todo if not os.path.exists(t[0])}
+    run_batch(args, list(needed.values()), "outliers")
+    load = load_average()
+    run_batch(args, [["robust", spoiled, "--method", method, "--threads", args.threads, *refs,
+                      "-o", prefix] for spoiled, _, method, prefix, refs in todo], "robust")
+    for _, _, _, prefix, _ in todo:
+        for ext in (".g2o", ".accepted.txt"):
+            os.remove(prefix + ext)
+        with open(prefix + ".load", "w") as f:
+            f.write(f"{load}\n")
     rows = []
-    for method in args.methods:
-        prefix = os.path.join(args.out, "runs", f"{name}-{method}")
-        if not (args.resume and os.path.exists(prefix + ".json")):
-            if not os.path.exists(spoiled):
-                antslam(args, "outliers", source, "--count", count, "--kind", kind, "--seed", seed,
-                        "-o", spoiled)
-            load = load_average()
-            refs = ["--reference", reference] + (["--reference", ground_truth] if ground_truth
-                                                 else [])
-            antslam(args, "robust", spoiled, "--method", method, "--threads", args.threads, *refs,
-                    "-o", prefix)
-            for ext in (".g2o", ".accepted.txt"):
-                os.remove(prefix + ext)
-            with open(prefix + ".load", "w") as f:
-                f.write(f"{load}\n")
-        rows.append(row_of(graph, kind, count, seed, method, prefix))
-    for path in (spoiled, spoiled.replace(".g2o", ".outliers.txt")):
-        if os.path.exists(path):
-            os.remove(path)
+    for graph, kind, count, seed, _, _ in cases:
+        spoiled, _ = spoil(args, graph, kind, count, seed)
+        for method in args.methods:
+            rows.append(row_of(graph, kind, count, seed, method, os.path.join(
+                args.out, "runs", f"{graph}-{kind}-{count}-{seed}-{method}")))
+        for path in (spoiled, spoiled.replace(".g2o", ".outliers.txt")):
+            if os.path.exists(path):
+                os.remove(path)
     return rows
 
 
@@ -200,6 +217,7 @@ def main():
         references[graph] = prefix + ".g2o"
     rows = []
     for seed in range(1, args.seeds + 1):
+        cases = []
         for graph in args.graphs:
             truth = GROUND_TRUTH.get(graph)
             truth = os.path.join(DATA, "posegraphs", truth) if truth else None
@@ -207,9 +225,10 @@ def main():
                 for kind in (args.kinds if count > 0 else ["none"]):
                     if count == 0 and seed > 1:
                         continue  # no false closures: nothing random
-                    progress(f"seed {seed}: {graph}, {count} {kind}")
-                    rows += run_one(args, graph, kind if count else "random", count, seed,
-                                    references[graph], truth)
+                    cases.append((graph, kind if count else "random", count, seed,
+                                  references[graph], truth))
+        progress(f"seed {seed}: {len(cases)} spoiled graphs x {len(args.methods)} methods")
+        rows += run_cases(args, cases)
         save_csv(args, "robust", COLUMNS, rows)
     rows = read_csv(os.path.join(args.out, "robust.csv"))
     summarize(args, rows)

@@ -4,7 +4,7 @@ std over runs, with the reference path length; plus the relations metric (Kuemme
 for Intel. Writes table1.csv (one row per dataset, method and run), table.md and table1.png.
 
     /usr/bin/python3 experiments/scripts/table1.py [--quick] [--runs 10] [--out results/table1]
-        [--publish]
+        [--ranks K] [--publish]
 
 Datasets: the GMapping-corrected logs (aces, intel, freiburg-079, csail) turned into benchmarks
 by `antslam simulate-odometry` (run r: noise seed r, reference = the corrected poses), and the raw
@@ -14,13 +14,17 @@ Methods: odometry only; the scan matcher alone (the frontend's pre-solution); ti
 (`antslam fragment-set` then `antslam optimize --tum-out`: each scan's corrected pose is its
 fragment's optimized frame times its pose in the fragment).
 
+The runs go stage by stage (noisy logs, frontends, methods, scores), each stage's commands
+independent of each other: with --ranks K each stage is one `mpirun -np K antslam batch`
+(the same files as --ranks 1, which runs them one after the other).
+
 --quick: aces and intel-subset, 1 run, 300 ACO iterations.
 """
 import os
 
-from experiment_common import (DATA, antslam, check_program, header, count_option,
-                               markdown_table, parser, path_length, plt, pm, progress, read_json,
-                               save_csv, save_figure, save_table, stats)
+from experiment_common import (DATA, check_program, header, count_option, markdown_table,
+                               parser, path_length, plt, pm, progress, ranks_option, read_json,
+                               run_batch, save_csv, save_figure, save_table, stats)
 
 LASER = os.path.join(DATA, "laser")
 CORRECTED = ["aces", "intel", "freiburg-079", "csail"]
@@ -31,40 +35,87 @@ METHODS = ["odometry", "scan-matcher", "tinyslam"] + OPTIMIZERS
 QUICK = ["aces", "intel-subset"]  # one corrected log, one raw log with relations
 
 
-def score(args, estimate, reference, relations):
-    out = estimate + ".eval.json"
-    extra = ["--relations", relations] if relations else []
-    antslam(args, "eval", estimate, reference, "--json", out, *extra)
-    e = read_json(out)
+def eval_job(estimate, reference, relations):
+    """The `antslam eval` job of one trajectory (its scores: score())."""
+    return ["eval", estimate, reference, "--json", estimate + ".eval.json",
+            *(["--relations", relations] if relations else [])]
+
+
+def score(estimate):
+    e = read_json(estimate + ".eval.json")
     rel = e.get("relations")
     return (e["ate"]["translation_m"]["rmse"], e["ate"]["rotation_deg"]["rmse"],
             rel["translation_m"]["mean"] if rel else None)
 
 
-def trajectories(args, log, work, seed, frontend_done):
-    """Every method's trajectory of one run: {method: TUM path}."""
-    tums = {"odometry": os.path.join(work, "odometry.tum"),
-            "scan-matcher": os.path.join(work, "scan-matcher.tum")}
-    fragment_set = os.path.join(work, "fragment-set.json")
-    if not frontend_done:
-        antslam(args, "odometry", log, "-o", tums["odometry"])
-        antslam(args, "fragment-set", log, "-o", fragment_set, "--seed", seed,
-                "--trajectory", tums["scan-matcher"])
-    tiny = os.path.join(work, f"tinyslam-{seed}")
-    antslam(args, "tinyslam", log, "--out", tiny, "--seed", seed)
-    tums["tinyslam"] = os.path.join(tiny, "trajectory.tum")
-    for method in OPTIMIZERS:
-        prefix = os.path.join(work, f"{method}-{seed}")
-        antslam(args, "optimize", fragment_set, "--method", method, "--seed", seed,
-                "--iterations", 300 if args.quick else 3000, "-o", prefix,
-                "--tum-out", prefix + ".tum")
-        tums[method] = prefix + ".tum"
-    return tums
+class Run:
+    """One run of one dataset: where its files go, its log and reference, and every method's
+    trajectory (tums: {method: TUM path})."""
+
+    def __init__(self, args, name, raw, run):
+        self.name, self.run = name, run
+        if raw:  # one frontend per raw log; the optimizer's and tinySLAM's seeds vary
+            self.work = os.path.join(args.out, "runs", name)
+            self.log, self.reference = os.path.join(LASER, raw[1]), os.path.join(LASER, raw[2])
+            self.relations = os.path.join(LASER, raw[3]) if raw[3] else None
+            self.simulate = None
+            self.frontend = run == 1
+        else:  # a fresh noisy odometry (and fragment set) per run
+            self.work = os.path.join(args.out, "runs", f"{name}-{run}")
+            self.log = os.path.join(self.work, "log.clf")
+            self.reference = os.path.join(self.work, "reference.tum")
+            self.relations = None
+            self.simulate = ["simulate-odometry",
+                             os.path.join(LASER, "corrected", f"{name}-corrected.log.gz"),
+                             "--out", self.work, "--seed", run]
+            self.frontend = True
+        self.fragment_set = os.path.join(self.work, "fragment-set.json")
+        tiny = os.path.join(self.work, f"tinyslam-{run}")
+        self.tiny = tiny
+        self.tums = {"odometry": os.path.join(self.work, "odometry.tum"),
+                     "scan-matcher": os.path.join(self.work, "scan-matcher.tum"),
+                     "tinyslam": os.path.join(tiny, "trajectory.tum")}
+        for method in OPTIMIZERS:
+            self.tums[method] = os.path.join(self.work, f"{method}-{run}.tum")
+
+    def frontend_jobs(self):
+        if not self.frontend:
+            return []
+        return [["odometry", self.log, "-o", self.tums["odometry"]],
+                ["fragment-set", self.log, "-o", self.fragment_set, "--seed", self.run,
+                 "--trajectory", self.tums["scan-matcher"]]]
+
+    def method_jobs(self, args):
+        jobs = [["tinyslam", self.log, "--out", self.tiny, "--seed", self.run]]
+        for method in OPTIMIZERS:
+            prefix = self.tums[method][:-len(".tum")]
+            jobs.append(["optimize", self.fragment_set, "--method", method, "--seed", self.run,
+                         "--iterations", 300 if args.quick else 3000, "-o", prefix,
+                         "--tum-out", self.tums[method]])
+        return jobs
+
+
+def run_all(args, runs):
+    """Every run's commands, stage by stage (each stage's runs are independent of each other:
+    one batch, over --ranks MPI ranks with run_batch): noisy logs, frontends, methods, scores."""
+    for r in runs:
+        os.makedirs(r.work, exist_ok=True)
+    stages = [("simulate", lambda r: [r.simulate] if r.simulate else []),
+              ("frontend", lambda r: r.frontend_jobs()),
+              ("methods", lambda r: r.method_jobs(args)),
+              ("eval", lambda r: [eval_job(t, r.reference, r.relations)
+                                  for t in r.tums.values()])]
+    for stage, jobs_of in stages:
+        progress(f"{stage}: {len(runs)} runs")
+        jobs = [[str(a) for a in job] for r in runs for job in jobs_of(r)]
+        # the runs of a raw log share its frontend's trajectories: each is scored once
+        run_batch(args, [list(job) for job in dict.fromkeys(map(tuple, jobs))], stage)
 
 
 def main():
     p = parser(__doc__, "table1")
     count_option(p, "--runs", "runs per dataset", 10, 1)
+    ranks_option(p)
     p.add_argument("--datasets", default=None,
                    help="comma-separated subset of " + ",".join(CORRECTED + [r[0] for r in RAW]))
     args = p.parse_args()
@@ -77,30 +128,18 @@ def main():
         if unknown:
             p.error(f"--datasets: unknown {', '.join(sorted(unknown))}")
         datasets = [d for d in datasets if d[0] in chosen.split(",")]
+    runs = [Run(args, name, raw, run) for name, raw, _ in datasets
+            for run in range(1, args.runs + 1)]
+    run_all(args, runs)
     rows, table, lengths = [], [], {}
-    for name, raw, _ in datasets:
+    for name, _, _ in datasets:
         results = {m: [] for m in METHODS}
-        for run in range(1, args.runs + 1):
-            progress(f"{name}: run {run}/{args.runs}")
-            if raw:  # one frontend per raw log; the optimizer's and tinySLAM's seeds vary
-                work = os.path.join(args.out, "runs", name)
-                os.makedirs(work, exist_ok=True)
-                log, reference = os.path.join(LASER, raw[1]), os.path.join(LASER, raw[2])
-                relations = os.path.join(LASER, raw[3]) if raw[3] else None
-                tums = trajectories(args, log, work, run, run > 1)
-            else:  # a fresh noisy odometry (and fragment set) per run
-                work = os.path.join(args.out, "runs", f"{name}-{run}")
-                antslam(args, "simulate-odometry",
-                        os.path.join(LASER, "corrected", f"{name}-corrected.log.gz"),
-                        "--out", work, "--seed", run)
-                log, reference = os.path.join(work, "log.clf"), os.path.join(work, "reference.tum")
-                relations = None
-                tums = trajectories(args, log, work, run, False)
-            lengths[name] = path_length(reference)
-            for method, tum in tums.items():
-                ate, rot, rel = score(args, tum, reference, relations)
+        for r in (r for r in runs if r.name == name):
+            lengths[name] = path_length(r.reference)
+            for method, tum in r.tums.items():
+                ate, rot, rel = score(tum)
                 results[method].append((ate, rot, rel))
-                rows.append([name, method, run, lengths[name], ate, rot,
+                rows.append([name, method, r.run, lengths[name], ate, rot,
                              "" if rel is None else rel])
         for method in METHODS:
             ate = stats([r[0] for r in results[method]])

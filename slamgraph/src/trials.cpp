@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include "aco/backend_factory.hpp"
 #include "aco/random.hpp"
@@ -14,29 +15,50 @@ std::uint64_t trial_seed(std::uint64_t seed, std::size_t trial) {
   return aco::mix_seed(seed, trial, 0x7472);
 }
 
+namespace {
+
+/// The trials to run: trials.only, checked, or every index.
+std::vector<std::size_t> trials_to_run(const TrialSettings& trials) {
+  if (!trials.only) {
+    std::vector<std::size_t> all(trials.trials);
+    for (std::size_t t = 0; t < all.size(); ++t) all[t] = t;
+    return all;
+  }
+  for (const std::size_t t : *trials.only)
+    if (t >= trials.trials)
+      throw std::invalid_argument("trial " + std::to_string(t) + " of a study of " +
+                                  std::to_string(trials.trials) + " trials");
+  return *trials.only;
+}
+
+}  // namespace
+
 std::vector<OptimizeResult> run_trials(const TrialRunner& run, const OptimizeSettings& settings,
                                        const TrialSettings& trials, const TrialsObserver& observer,
                                        const OptimizeObserver& convergence) {
   if (trials.trials == 0) throw std::invalid_argument("trials must be >= 1");
-  if (trials.trials == 1) {
+  const std::vector<std::size_t> indices = trials_to_run(trials);
+  if (trials.trials == 1) {  // the one trial runs its ants on the threads
+    std::vector<OptimizeResult> results;
+    if (indices.empty()) return results;
     OptimizeSettings s = settings;
     s.seed = trial_seed(settings.seed, 0);
     s.threads = trials.threads;
     s.backend = trials.backend;
-    std::vector<OptimizeResult> results{run(s, convergence)};
+    results.push_back(run(s, convergence));
     if (observer) observer(1);
     return results;
   }
-  std::vector<OptimizeResult> results(trials.trials);
+  std::vector<OptimizeResult> results(indices.size());
   std::mutex mutex;
   std::size_t finished = 0;
   aco::with_backend(trials.backend, trials.threads, [&](auto backend) {
-    backend.for_each(trials.trials, [&](std::size_t t) {
+    backend.for_each(indices.size(), [&](std::size_t k) {
       OptimizeSettings s = settings;
-      s.seed = trial_seed(settings.seed, t);
+      s.seed = trial_seed(settings.seed, indices[k]);
       s.threads = 1;
       s.backend = aco::BackendKind::serial;
-      results[t] = run(s, {});
+      results[k] = run(s, {});
       const std::lock_guard lock(mutex);
       ++finished;
       if (observer) observer(finished);

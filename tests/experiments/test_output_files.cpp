@@ -141,6 +141,31 @@ TEST(OutputFiles, CommitReplacesTogetherAndRemovesStaleOutputs) {
   EXPECT_EQ(read(dir / "notes.txt"), "the user's own file");
 }
 
+TEST(OutputFiles, ARankThatDoesNotWriteChecksButNeverTouchesAFile) {
+  const fs::path dir = fresh_dir("not-root");
+  fs::create_directory(dir / "a-directory");
+  put(dir / "report.json", "the root's report");
+  put(dir / "map.png", "the root's map");
+  OutputFiles outputs(false);
+  EXPECT_FALSE(outputs.writes());
+  EXPECT_THROW(outputs.add(dir / "a-directory"), UsageError);  // the same checks as the root
+  outputs.add(dir / "report.json");
+  outputs.add(dir / "map.png");  // declared, not written: the root's commit would remove it
+  outputs.add(dir / "sub" / "new.txt");
+  bool writer_ran = false;
+  outputs.write(dir / "report.json", [&](std::ostream& out) {
+    writer_ran = true;
+    out << "this rank's report";
+  });
+  outputs.write(dir / "sub" / "new.txt", "new");
+  EXPECT_THROW(outputs.write(dir / "undeclared.txt", "x"), std::logic_error);
+  outputs.commit();
+  EXPECT_FALSE(writer_ran);
+  EXPECT_EQ(read(dir / "report.json"), "the root's report");
+  EXPECT_EQ(read(dir / "map.png"), "the root's map");
+  EXPECT_EQ(listing(dir), "a-directory map.png report.json");  // no staging, no sub/
+}
+
 TEST(OutputFiles, AFailedCommitRestoresWhatItReplaced) {
   const fs::path dir = fresh_dir("rollback");
   put(dir / "a.txt", "old a");

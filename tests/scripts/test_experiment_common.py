@@ -128,5 +128,34 @@ class Files(unittest.TestCase):
                          "| a | b |\n|---|---|\n| 1 | 2 |\n")
 
 
+class Mpirun(unittest.TestCase):
+    def flags(self, euid, cores, ranks):
+        saved = os.geteuid, os.cpu_count
+        os.geteuid, os.cpu_count = (lambda: euid), (lambda: cores)
+        try:
+            return common.mpirun(ranks)
+        finally:
+            os.geteuid, os.cpu_count = saved
+
+    def test_root_and_oversubscription_flags_only_when_needed(self):
+        self.assertEqual(self.flags(1000, 4, 2), ["mpirun", "-q", "-np", "2"])
+        self.assertEqual(self.flags(0, 4, 4), ["mpirun", "-q", "-np", "4", "--allow-run-as-root"])
+        self.assertEqual(self.flags(1000, 2, 3), ["mpirun", "-q", "-np", "3", "--oversubscribe"])
+
+
+class RunBatch(unittest.TestCase):
+    def test_one_rank_runs_the_jobs_in_order_without_mpi(self):
+        with tempfile.TemporaryDirectory() as out:
+            args = argparse.Namespace(ranks=1, out=out, antslam="/bin/echo")
+            self.assertEqual(common.run_batch(args, [["a", 1], ["b c"]]), ["a 1\n", "b c\n"])
+            self.assertEqual(os.listdir(out), [])  # no jobs file: nothing but the runs
+
+    def test_a_job_argument_with_a_space_cannot_go_into_a_batch(self):
+        with tempfile.TemporaryDirectory() as out:
+            args = argparse.Namespace(ranks=2, out=out, antslam="/bin/echo")
+            with self.assertRaises(SystemExit):
+                common.run_batch(args, [["optimize", "my file.json"]])
+
+
 if __name__ == "__main__":
     unittest.main()

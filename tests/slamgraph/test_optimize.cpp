@@ -103,6 +103,22 @@ TEST(Trials, ResultsDoNotDependOnThreadsAndTrialsDiffer) {
   EXPECT_NE(one[0].choice, one[1].choice);
 }
 
+TEST(Trials, ASubsetRunsEachTrialAsTheWholeStudyDoes) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  const OptimizeSettings s = quick(Method::hybrid, 5);
+  const auto all = run_trials(set, s, {.trials = 5, .threads = 2});
+  const auto some = run_trials(set, s, {.trials = 5, .threads = 1, .only = {{4, 1, 3}}});
+  ASSERT_EQ(some.size(), 3U);
+  const std::size_t order[] = {4, 1, 3};
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(some[k].choice, all[order[k]].choice);
+    EXPECT_EQ(some[k].scores.weight, all[order[k]].scores.weight);
+    EXPECT_EQ(some[k].convergence.size(), all[order[k]].convergence.size());
+  }
+  EXPECT_TRUE(run_trials(set, s, {.trials = 5, .only = std::vector<std::size_t>{}}).empty());
+  EXPECT_THROW(run_trials(set, s, {.trials = 5, .only = {{5}}}), std::invalid_argument);
+}
+
 TEST(Trials, Statistics) {
   const std::vector<double> v{1.0, 2.0, 4.0};
   const Statistics s = statistics(v);

@@ -98,6 +98,30 @@ TEST(Experiment, StopsAtTheKnownOptimumAndReportsIt) {
       << md.str();
 }
 
+TEST(Experiment, ASubsetOfRunsGivesTheSameRunsInTheOrderAsked) {
+  ExperimentSettings e = small_experiment();
+  e.instances.push_back(kFixtures / "burma14.tsp");  // 16 runs, the second 8 on a second instance
+  e.termination.max_iterations = 4;
+  ASSERT_EQ(run_count(e), 16U);
+  const std::vector<ExperimentRun> all = run_experiment(e);
+  e.only = {{13, 2, 7}};
+  const std::vector<ExperimentRun> some = run_experiment(e);
+  ASSERT_EQ(some.size(), 3U);
+  const std::size_t order[] = {13, 2, 7};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const ExperimentRun& a = all[order[k]];
+    EXPECT_EQ(some[k].variant, a.variant);
+    EXPECT_EQ(some[k].threads, a.threads);
+    EXPECT_EQ(some[k].seed, a.seed);
+    EXPECT_EQ(some[k].length, a.length);
+    EXPECT_EQ(some[k].result.best.path, a.result.best.path);
+  }
+  EXPECT_EQ(some[0].seed, 8U);  // 13 = ((1 * 2 + 1) * 2 + 0) * 2 + 1: acs, 1 thread, seed 7 + 1
+  EXPECT_EQ(some[0].variant, aco::Variant::acs);
+  e.only = {{16}};
+  EXPECT_THROW(run_experiment(e), std::invalid_argument);
+}
+
 TEST(Experiment, ReportsHaveARowPerRunAndPerGroup) {
   ExperimentSettings e = small_experiment();
   e.termination.max_iterations = 3;

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 
 #include "aco/backend_kind.hpp"
 #include "tsp/optima.hpp"
@@ -20,6 +21,15 @@ void validate(const ExperimentSettings& s) {
   if (s.threads.empty()) throw std::invalid_argument("experiment: no thread count");
   if (s.seeds == 0) throw std::invalid_argument("experiment: seeds must be >= 1");
   for (const std::size_t threads : s.threads) aco::resolve(s.solver.backend, threads);
+  if (s.only)
+    for (const std::size_t i : *s.only)
+      if (i >= run_count(s))
+        throw std::invalid_argument("experiment: run " + std::to_string(i) + " of " +
+                                    std::to_string(run_count(s)));
+}
+
+std::size_t run_count(const ExperimentSettings& s) {
+  return s.instances.size() * s.variants.size() * s.threads.size() * s.seeds;
 }
 
 double ExperimentRun::excess_percent() const {
@@ -29,37 +39,47 @@ double ExperimentRun::excess_percent() const {
 std::vector<ExperimentRun> run_experiment(const ExperimentSettings& settings,
                                           const ExperimentObserver& observer) {
   validate(settings);
-  const std::size_t total = settings.instances.size() * settings.variants.size() *
-                            settings.threads.size() * settings.seeds;
-  std::vector<ExperimentRun> runs;
-  runs.reserve(total);
-  for (const std::filesystem::path& path : settings.instances) {
+  const std::size_t total = run_count(settings);
+  const std::size_t per_instance = total / settings.instances.size();
+  std::vector<std::size_t> wanted(total);
+  for (std::size_t i = 0; i < total; ++i) wanted[i] = i;
+  if (settings.only) wanted = *settings.only;
+  std::vector<ExperimentRun> runs(wanted.size());
+  // Instance-major, so that each instance is read once for the runs that need it.
+  for (std::size_t k = 0; k < settings.instances.size(); ++k) {
+    const auto of_instance = [&](std::size_t i) { return i / per_instance == k; };
+    if (std::none_of(wanted.begin(), wanted.end(), of_instance)) continue;
+    const std::filesystem::path& path = settings.instances[k];
     const TspProblem problem(read_instance(path), settings.problem);
     const std::optional<double> optimum = known_optimum(path);
     aco::Termination termination = settings.termination;
     if (settings.stop_at_optimum && optimum) termination.target_cost = *optimum;
-    for (const aco::Variant variant : settings.variants)
-      for (const std::size_t threads : settings.threads)
-        for (std::uint64_t s = 0; s < settings.seeds; ++s) {
-          SolverSettings solver = settings.solver;
-          solver.aco.variant = variant;
-          solver.aco.seed = settings.first_seed + s;
-          solver.threads = threads;
-          ExperimentRun r{problem.instance().name(),
-                          problem.size(),
-                          variant,
-                          threads,
-                          solver.aco.seed,
-                          0.0,
-                          optimum,
-                          {}};
-          const std::size_t index = runs.size();
-          r.result = solve(problem, solver, termination, [&](const aco::IterationReport& report) {
-            if (observer) observer(index, total, r, report);
-          });
-          r.length = problem.instance().tour_length(r.result.best.path);
-          runs.push_back(std::move(r));
-        }
+    for (std::size_t w = 0; w < wanted.size(); ++w) {
+      const std::size_t index = wanted[w];
+      if (!of_instance(index)) continue;
+      // index = ((k * variants + v) * threads + t) * seeds + s
+      const std::size_t s = index % settings.seeds;
+      const std::size_t t = index / settings.seeds % settings.threads.size();
+      const std::size_t v =
+          index / settings.seeds / settings.threads.size() % settings.variants.size();
+      SolverSettings solver = settings.solver;
+      solver.aco.variant = settings.variants[v];
+      solver.aco.seed = settings.first_seed + s;
+      solver.threads = settings.threads[t];
+      ExperimentRun r{problem.instance().name(),
+                      problem.size(),
+                      settings.variants[v],
+                      settings.threads[t],
+                      solver.aco.seed,
+                      0.0,
+                      optimum,
+                      {}};
+      r.result = solve(problem, solver, termination, [&](const aco::IterationReport& report) {
+        if (observer) observer(index, total, r, report);
+      });
+      r.length = problem.instance().tour_length(r.result.best.path);
+      runs[w] = std::move(r);
+    }
   }
   return runs;
 }

@@ -12,6 +12,7 @@
 #include <set>
 #include <string>
 
+#include "cli/command_world.hpp"
 #include "cli/errors.hpp"
 #include "cli/interrupts.hpp"
 
@@ -98,6 +99,8 @@ void sync_to_disk(const fs::path& path, int flags) {
 
 }  // namespace
 
+OutputFiles::OutputFiles() : writes_(command_world().is_root()) {}
+
 OutputFiles::~OutputFiles() {
   if (!committed_) discard();
 }
@@ -141,6 +144,7 @@ const fs::path& OutputFiles::staging_for(const fs::path& target) {
 
 void OutputFiles::write(const fs::path& path, const std::function<void(std::ostream&)>& writer) {
   Target& target = find(path);
+  if (!writes_) return;
   const fs::path staged = staging_for(path) / path.filename();
   {
     std::ofstream out(staged, std::ios::binary | std::ios::trunc);
@@ -160,6 +164,10 @@ void OutputFiles::write(const fs::path& path, std::string_view bytes) {
 }
 
 void OutputFiles::commit() {
+  if (!writes_) {
+    committed_ = true;
+    return;
+  }
   without_interrupts([&] {
     // (target, its old content moved aside, or empty if there was none)
     std::vector<std::pair<fs::path, fs::path>> replaced;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct TrialSettings {
   std::size_t trials = 1;   ///< independent trials (count)
   std::size_t threads = 0;  ///< threads the trials run on (0 = all cores)
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the trials in parallel
+  /// The trials to run (indices < trials, results in this order), each exactly as in the whole
+  /// study, so that processes can share a study's trials; all trials when empty.
+  std::optional<std::vector<std::size_t>> only = std::nullopt;
 };
 
 /// One trial: the method of `settings` (seed, threads and backend set for the trial), with the

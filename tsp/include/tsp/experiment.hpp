@@ -31,7 +31,13 @@ struct ExperimentSettings {
   SolverSettings solver;         ///< everything but the variant, seed and threads of a run
   aco::Termination termination;  ///< budget of every run (must be bounded)
   bool stop_at_optimum = true;   ///< end a run at the known optimum (as ACOTSP does)
+  /// The runs to do (indices into the whole experiment's runs, results in this order), each
+  /// exactly as in the whole experiment, so that processes can share it; all runs when empty.
+  std::optional<std::vector<std::size_t>> only = std::nullopt;
 };
+
+/// How many runs the whole experiment has: instances x variants x threads x seeds.
+std::size_t run_count(const ExperimentSettings& settings);
 
 /// Throws std::invalid_argument naming the first nonsensical field (an unbounded budget, no
 /// instance, variant, thread count or seed; the serial backend on more than one thread).
@@ -53,13 +59,13 @@ struct ExperimentRun {
   bool hit_optimum() const { return optimum && length <= *optimum; }
 };
 
-/// Runs in progress: `index` of `total` (0-based), the run's configuration (no result yet) and
-/// the engine's report of its latest iteration.
+/// Runs in progress: `index` of `total` in the whole experiment (0-based), the run's configuration
+/// (no result yet) and the engine's report of its latest iteration.
 using ExperimentObserver =
     std::function<void(std::size_t index, std::size_t total, const ExperimentRun& run,
                        const aco::IterationReport& report)>;
 
-/// Every run, instance-major, then variant, threads and seed.
+/// Every run (or those of settings.only), instance-major, then variant, threads and seed.
 std::vector<ExperimentRun> run_experiment(const ExperimentSettings& settings,
                                           const ExperimentObserver& observer = {});
 

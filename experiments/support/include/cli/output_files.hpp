@@ -12,6 +12,8 @@
 // Until commit, the targets are untouched; an exception, an interrupt (interrupts.hpp) or the
 // destructor removes the staging directories. A staging directory left by a killed process is
 // removed by the next run that writes beside it.
+// A run over several processes writes on its root only: the other ranks declare the same files
+// (and so refuse the same bad paths) but never stage, write, replace or remove anything.
 
 #include <filesystem>
 #include <functional>
@@ -24,7 +26,10 @@ namespace antslam::cli {
 
 class OutputFiles {
  public:
-  OutputFiles() = default;
+  /// Writes if this process is the root of the command's processes (cli/command_world.hpp).
+  OutputFiles();
+  /// Writes only if `this_process_writes`; otherwise add() checks and the rest does nothing.
+  explicit OutputFiles(bool this_process_writes) : writes_(this_process_writes) {}
   ~OutputFiles();
   OutputFiles(const OutputFiles&) = delete;
   OutputFiles& operator=(const OutputFiles&) = delete;
@@ -32,6 +37,9 @@ class OutputFiles {
   /// Declares an output file and checks that it can be written; throws UsageError naming the
   /// path and the problem. Returns the path.
   std::filesystem::path add(const std::filesystem::path& path);
+
+  /// Whether this process writes (and so runs the writers of write()).
+  bool writes() const { return writes_; }
 
   /// Writes the content of a declared file into its staging directory (creating the target's
   /// parent directories). Throws OutputError naming the file if anything fails.
@@ -54,6 +62,7 @@ class OutputFiles {
 
   std::vector<Target> targets_;
   std::map<std::filesystem::path, std::filesystem::path> staging_;  ///< parent -> staging dir
+  bool writes_ = true;
   bool committed_ = false;
 };
 

@@ -1,0 +1,14 @@
+#include "cli/farm.hpp"
+
+namespace antslam::cli {
+
+std::vector<std::size_t> share_of(std::size_t count, std::size_t rank, std::size_t size) {
+  if (size == 0 || rank >= size)
+    throw std::invalid_argument("share_of: rank " + std::to_string(rank) + " of " +
+                                std::to_string(size));
+  std::vector<std::size_t> share;
+  for (std::size_t i = rank; i < count; i += size) share.push_back(i);
+  return share;
+}
+
+}  // namespace antslam::cli
