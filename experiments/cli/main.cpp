@@ -10,10 +10,12 @@
 #include "cli/errors.hpp"
 #include "cli/interrupts.hpp"
 #include "commands.hpp"
+#include "dist/communicator.hpp"
 
 int main(int argc, char** argv) {
   using antslam::cli::ExitStatus;
   antslam::cli::handle_interrupts();
+  antslam::dist::MpiSession mpi(argc, argv);
   CLI::App app{"antslam: ant colony optimization for SLAM map optimization and the TSP"};
   antslam::cli::Failure failure;
   try {

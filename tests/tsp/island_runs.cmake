@@ -1,0 +1,40 @@
+# Runs `antslam tsp ARGS --colonies K` once per RUNS entry "R:K" (R ranks: R = 1 without a
+# launcher, else MPIEXEC -n R, oversubscribed beyond the cores) and requires every run's tour
+# to be byte-identical to the single-process run with the same K, and every run to print its
+# summary once (rank 0 alone prints).
+#   ANTSLAM, MPIEXEC, OUT (a scratch directory), ARGS ('|'-separated), RUNS ('|'-separated)
+string(REPLACE "|" ";" args "${ARGS}")
+string(REPLACE "|" ";" runs "${RUNS}")
+file(MAKE_DIRECTORY "${OUT}")
+foreach(run IN LISTS runs)
+  string(REPLACE ":" ";" parts "${run}")
+  list(GET parts 0 ranks)
+  list(GET parts 1 colonies)
+  set(tour "${OUT}/r${ranks}-k${colonies}.tour")
+  file(REMOVE "${tour}")
+  set(launcher "")
+  if(ranks GREATER 1)
+    set(launcher "${MPIEXEC}" -n ${ranks} --oversubscribe)
+  endif()
+  execute_process(COMMAND ${launcher} "${ANTSLAM}" ${args} --colonies ${colonies} --tour-out
+                          "${tour}"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${run}: exit ${rc}; stderr:\n${err}")
+  endif()
+  string(REGEX MATCHALL "best length" printed "${out}")
+  list(LENGTH printed times)
+  if(NOT times EQUAL 1)
+    message(FATAL_ERROR "${run}: the summary was printed ${times} times:\n${out}")
+  endif()
+  if(NOT EXISTS "${tour}")
+    message(FATAL_ERROR "${run}: no tour written")
+  endif()
+  if(ranks GREATER 1)
+    execute_process(COMMAND "${CMAKE_COMMAND}" -E compare_files "${OUT}/r1-k${colonies}.tour"
+                            "${tour}" RESULT_VARIABLE differ)
+    if(NOT differ EQUAL 0)
+      message(FATAL_ERROR "${run}: the tour differs from the single-process run with ${colonies} colonies")
+    endif()
+  endif()
+endforeach()
