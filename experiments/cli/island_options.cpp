@@ -19,17 +19,18 @@ constexpr std::uint64_t kMaxColonies = 4096;
 void add_island_options(CLI::App& command, IslandOptions& o) {
   command
       .add_option("--colonies", o.colonies,
-                  "island model: K colonies exchanging their best tours (under mpirun -np R: "
+                  "island model: K colonies exchanging their best solutions (under mpirun -np R: "
                   "R | K, K/R colonies per rank; else all in this process)")
       ->check(count_in(1, kMaxColonies));
   command
       .add_option("--exchange-every", o.exchange_every,
-                  "island model: iterations between exchanges of the colonies' best tours")
+                  "island model: iterations between exchanges of the colonies' best solutions")
       ->check(count_in(1, std::uint64_t{1} << 40U))
       ->capture_default_str();
   command
-      .add_option("--topology", o.topology,
-                  "island model: ring (colony c receives from c-1) or full (from the best other)")
+      .add_option(
+          "--topology", o.topology,
+          "island model: ring (colony c receives from c-1) or full (from the best other colony)")
       ->check(CLI::IsMember({"ring", "full"}))
       ->capture_default_str();
 }
