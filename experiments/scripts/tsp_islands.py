@@ -184,10 +184,10 @@ def main():
     p.add_argument("--no-mpi", action="store_true",
                    help="run the island run's colonies in one process (smoke test only)")
     args = p.parse_args()
-    instances = ["pcb442"] if args.quick else args.instances.split(",")
-    unknown = [name for name in instances if name not in BUDGET_S]
+    unknown = [name for name in args.instances.split(",") if name not in BUDGET_S]
     if unknown:
         p.error(f"--instances: unknown {', '.join(unknown)} (known: {', '.join(BUDGET_S)})")
+    instances = ["pcb442"] if args.quick else args.instances.split(",")
     check_program(args)
     head = header(args, "experiments/scripts/tsp_islands.py")  # the load before the runs
     if args.quick:
