@@ -317,6 +317,33 @@ TEST(Islands, AFailingShareStopsEveryShareAtTheSameBoundary) {
   EXPECT_EQ(last_iteration, (std::vector<std::uint64_t>{0, 0}));
 }
 
+TEST(Islands, AFailingObserverStopsEveryShareAtTheNextBoundary) {
+  const EuclideanTsp problem(30, 8, 41);
+  ThreadedExchange exchange(2, 2);
+  std::vector<std::uint64_t> last_iteration(2, 0);
+  std::vector<int> threw(2, 0);
+  {
+    std::vector<std::jthread> threads;
+    for (std::size_t r = 0; r < 2; ++r)
+      threads.emplace_back([&, r] {
+        const auto observer = [&](const IslandReport& report) {
+          last_iteration[r] = report.run.iteration;
+          if (r == 1 && report.run.iteration == 3) throw std::runtime_error("observer failed");
+        };
+        try {
+          solve_islands(
+              problem, mmas_parameters(2), Termination{.max_iterations = 10},
+              [] { return SerialBackend{}; }, NoLocalSearch{},
+              {.colonies = 2, .first = r, .local = 1}, exchange.for_process(r, r), observer);
+        } catch (const std::runtime_error&) {
+          threw[r] = 1;
+        }
+      });
+  }
+  EXPECT_EQ(threw, (std::vector<int>{1, 1}));
+  EXPECT_EQ(last_iteration, (std::vector<std::uint64_t>{3, 3}));
+}
+
 TEST(Islands, StopsWhenAnyColonyReachesTheTarget) {
   const EuclideanTsp problem = circle(12, 6);
   Parameters p = mmas_parameters(3);

@@ -231,18 +231,21 @@ IslandResult run_islands(MakeColony&& make_colony, IslandSettings s, const Termi
     const std::optional<StopReason> reason =
         detail::agreed_stop(termination, all, best, iteration, result.run.best_iteration);
     report.exchanged = paths && !reason;
-    if (report.exchanged) {
-      ++result.exchanges;
-      for (std::size_t i = 0; i < s.local; ++i) {
-        const Offer& from = all[immigrant_source(s.first + i, all, s.topology)];
-        if (colonies[i]->receive(Solution{from.path, from.best})) ++result.immigrants;
-      }
+    if (report.exchanged) ++result.exchanges;
+    try {  // a failure here reaches the other processes at the next gather
+      if (report.exchanged)
+        for (std::size_t i = 0; i < s.local; ++i) {
+          const Offer& from = all[immigrant_source(s.first + i, all, s.topology)];
+          if (colonies[i]->receive(Solution{from.path, from.best})) ++result.immigrants;
+        }
+      for (std::size_t i = 0; i < s.local; ++i) local_best[i] = colonies[i]->best().cost;
+      report.offered = offered;
+      report.local = local_best;
+      report.first = s.first;
+      if (observer) observer(report);
+    } catch (...) {
+      failure = std::current_exception();
     }
-    for (std::size_t i = 0; i < s.local; ++i) local_best[i] = colonies[i]->best().cost;
-    report.offered = offered;
-    report.local = local_best;
-    report.first = s.first;
-    if (observer) observer(report);
     result.run.elapsed_s = report.run.elapsed_s;
     if (!reason) continue;
 
@@ -256,6 +259,7 @@ IslandResult run_islands(MakeColony&& make_colony, IslandSettings s, const Termi
       mine[i] = Offer{colonies[i]->best().cost, 0.0, colonies[i]->best().path, 0};
     all = gather(std::move(mine));
   }
+  if (failure) std::rethrow_exception(failure);  // the last boundary's observer failed here
   for (std::size_t c = 0; c < k; ++c) {
     result.colony_best.push_back(all[c].best);
     if (all[c].best < all[result.best_colony].best) result.best_colony = c;
