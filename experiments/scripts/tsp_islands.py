@@ -151,11 +151,14 @@ def summarize(rows, instances):
         wins = sum(i < p for i, p in zip(island_excess, plain_excess))
         ties = sum(i == p for i, p in zip(island_excess, plain_excess))
         share = stats([100.0 * islands[s][8] / islands[s][9] for s in seeds])
+        plain_iterations = stats([r[7] for r in rows if r[0] == name and r[2] == "independent"])
         table.append([name, BUDGET_S[name], len(seeds), pm(stats(island_excess)),
                       pm(stats(plain_excess)), f"{wins}/{ties}/{len(seeds) - wins - ties}",
-                      f"{share['mean']:.1f}"])
+                      f"{stats([islands[s][7] for s in seeds])['mean']:.0f} / "
+                      f"{plain_iterations['mean']:.0f}", f"{share['mean']:.1f}"])
     return markdown_table(["instance", "s per colony", "seeds", "islands: excess %",
                            "independent (better of 2): excess %", "islands win/tie/lose",
+                           "iterations per colony: islands / independent",
                            "exchange % of island time"], table), pairs
 
 
