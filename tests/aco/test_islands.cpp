@@ -289,59 +289,63 @@ TEST(Islands, SpreadOverProcessesIsTheSameRun) {
   }
 }
 
+/// Two processes of two colonies, one each, simulated by threads: share(r, exchange, observer)
+/// runs process r's island run. Which shares threw, and the last boundary each observed.
+struct SharesEnd {
+  std::vector<int> threw{0, 0};
+  std::vector<std::uint64_t> last_iteration{0, 0};
+};
+template <class Share>
+SharesEnd run_two_shares(Share share) {
+  ThreadedExchange exchange(2, 2);
+  SharesEnd end;
+  std::vector<std::jthread> threads;
+  for (std::size_t r = 0; r < 2; ++r)
+    threads.emplace_back([&, r] {
+      const IslandObserver observe = [&](const IslandReport& report) {
+        end.last_iteration[r] = report.run.iteration;
+      };
+      try {
+        share(r, exchange.for_process(r, r), observe);
+      } catch (const std::runtime_error&) {
+        end.threw[r] = 1;
+      }
+    });
+  threads.clear();
+  return end;
+}
+
 TEST(Islands, AFailingShareStopsEveryShareAtTheSameBoundary) {
   const EuclideanTsp problem(30, 8, 29);
-  ThreadedExchange exchange(2, 2);
-  std::vector<std::uint64_t> last_iteration(2, 0);
-  std::vector<int> threw(2, 0);
-  {
-    std::vector<std::jthread> threads;
-    for (std::size_t r = 0; r < 2; ++r)
-      threads.emplace_back([&, r] {
+  const SharesEnd end =
+      run_two_shares([&](std::size_t r, const Exchange& exchange, const IslandObserver& observe) {
         const auto make_colony = [&](std::size_t c) {
           if (c == 1) throw std::runtime_error("colony 1 cannot start");
           return std::make_unique<MmasColony>(problem, wandering(colony_seed(1, c)),
                                               RandomProportional{}, MaxMinUpdate());
         };
-        try {
-          run_islands(
-              make_colony, {.colonies = 2, .first = r, .local = 1},
-              Termination{.max_iterations = 10}, exchange.for_process(r, r),
-              [&](const IslandReport& report) { last_iteration[r] = report.run.iteration; });
-        } catch (const std::runtime_error&) {
-          threw[r] = 1;
-        }
+        run_islands(make_colony, {.colonies = 2, .first = r, .local = 1},
+                    Termination{.max_iterations = 10}, exchange, observe);
       });
-  }
-  EXPECT_EQ(threw, (std::vector<int>{1, 1}));
-  EXPECT_EQ(last_iteration, (std::vector<std::uint64_t>{0, 0}));
+  EXPECT_EQ(end.threw, (std::vector<int>{1, 1}));
+  EXPECT_EQ(end.last_iteration, (std::vector<std::uint64_t>{0, 0}));
 }
 
 TEST(Islands, AFailingObserverStopsEveryShareAtTheNextBoundary) {
   const EuclideanTsp problem(30, 8, 41);
-  ThreadedExchange exchange(2, 2);
-  std::vector<std::uint64_t> last_iteration(2, 0);
-  std::vector<int> threw(2, 0);
-  {
-    std::vector<std::jthread> threads;
-    for (std::size_t r = 0; r < 2; ++r)
-      threads.emplace_back([&, r] {
-        const auto observer = [&](const IslandReport& report) {
-          last_iteration[r] = report.run.iteration;
-          if (r == 1 && report.run.iteration == 3) throw std::runtime_error("observer failed");
-        };
-        try {
-          solve_islands(
-              problem, mmas_parameters(2), Termination{.max_iterations = 10},
-              [] { return SerialBackend{}; }, NoLocalSearch{},
-              {.colonies = 2, .first = r, .local = 1}, exchange.for_process(r, r), observer);
-        } catch (const std::runtime_error&) {
-          threw[r] = 1;
-        }
+  const SharesEnd end =
+      run_two_shares([&](std::size_t r, const Exchange& exchange, const IslandObserver& observe) {
+        solve_islands(
+            problem, mmas_parameters(2), Termination{.max_iterations = 10},
+            [] { return SerialBackend{}; }, NoLocalSearch{},
+            {.colonies = 2, .first = r, .local = 1}, exchange,
+            [&](const IslandReport& report) {
+              observe(report);
+              if (r == 1 && report.run.iteration == 3) throw std::runtime_error("observer failed");
+            });
       });
-  }
-  EXPECT_EQ(threw, (std::vector<int>{1, 1}));
-  EXPECT_EQ(last_iteration, (std::vector<std::uint64_t>{3, 3}));
+  EXPECT_EQ(end.threw, (std::vector<int>{1, 1}));
+  EXPECT_EQ(end.last_iteration, (std::vector<std::uint64_t>{3, 3}));
 }
 
 TEST(Islands, StopsWhenAnyColonyReachesTheTarget) {
