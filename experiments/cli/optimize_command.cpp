@@ -20,7 +20,9 @@
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
+#include "dist/communicator.hpp"
 #include "eval/evaluation.hpp"
+#include "island_options.hpp"
 #include "optimizer_options.hpp"
 #include "result_bytes.hpp"
 #include "slamgraph/fragment_set_io.hpp"
@@ -44,6 +46,7 @@ struct OptimizeOptions {
   std::size_t trials = 1;
   std::size_t threads = 1;
   slam::G2oImportSettings import;
+  IslandOptions islands;
   slam::OptimizeSettings s;  ///< resolved from `optimizer`
 };
 
@@ -151,6 +154,14 @@ void print_summary(const slam::StudyResult& r, const Subject& subject, const Opt
 void run(const OptimizeOptions& options) {
   OptimizeOptions o = options;
   o.s = optimize_settings(o.optimizer);
+  dist::Communicator& world = command_world();
+  if (o.islands.colonies > 0) {  // without --colonies, ranks share the trials
+    if (o.trials != 1)
+      throw UsageError("--colonies runs one trial of " + std::to_string(o.islands.colonies) +
+                       " colonies: give --trials 1, not " + std::to_string(o.trials));
+    o.s.islands = island_settings(o.islands, world, "optimize");
+    if (o.s.islands && world.size() > 1) o.s.exchange = island_exchange(world);
+  }
   slam::validate(o.s);
   if (o.threads == 0) o.threads = std::max(1U, std::thread::hardware_concurrency());
   const std::string prefix =
@@ -173,6 +184,7 @@ void run(const OptimizeOptions& options) {
   const std::vector<slam::OptimizeResult> trials = run_study(subject, o);
   slam::StudyResult r = slam::summarize(o.input, o.s, trials);
   if (!subject.reference.empty()) r.error = eval::frames_error(r.best.frames, subject.reference);
+  if (!world.is_root()) return;  // the colonies' ranks: rank 0 alone writes and prints
 
   outputs.write(result_json, [&](std::ostream& out) { slam::write_result(out, r); });
   outputs.write(trials_csv,
@@ -218,6 +230,7 @@ void add_optimize_command(CLI::App& app) {
       ->check(count_in(0, kMaxThreads))
       ->capture_default_str();
   add_optimizer_options(*cmd, o->optimizer);
+  add_island_options(*cmd, o->islands);
   cmd->add_option("-m,--samples", o->import.samples,
                   "pose graph input: samples drawn per alignment")
       ->check(count_in(1, kMaxSamples))

@@ -1,6 +1,7 @@
 // antslam tsp: solve one TSPLIB instance, print a summary, optionally write the best tour, a
 // per-iteration trace (CSV) and a JSON summary.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +21,8 @@
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
 #include "commands.hpp"
+#include "dist/communicator.hpp"
+#include "island_options.hpp"
 #include "tsp/optima.hpp"
 #include "tsp/tsplib.hpp"
 #include "tsp_options_command.hpp"
@@ -32,6 +35,7 @@ namespace {
 struct TspCommand {
   std::filesystem::path instance;
   TspOptions algorithm;
+  IslandOptions islands;
   std::uint64_t iterations = 0;
   double time_s = 0.0;
   double cpu_time_s = 0.0;
@@ -50,6 +54,15 @@ std::string excess_text(double length, std::optional<double> optimum) {
   out << std::showpos << std::fixed << std::setprecision(3) << 100.0 * (length / *optimum - 1.0)
       << "%";
   return out.str();
+}
+
+void print_islands(const aco::IslandSettings& s, const aco::IslandResult& r) {
+  std::cout << "islands      " << s.colonies << " colonies (" << aco::to_string(s.topology)
+            << ", exchange every " << s.exchange_every << " iterations; " << s.local
+            << " per process), best from colony " << r.best_colony << ", " << r.exchanges
+            << " exchanges, " << std::fixed << std::setprecision(3) << r.exchange_s
+            << " s in the exchange (" << std::setprecision(1)
+            << 100.0 * r.exchange_s / std::max(r.run.elapsed_s, 1e-9) << "% of the run)\n";
 }
 
 void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
@@ -76,7 +89,9 @@ void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
 void write_outputs(const TspCommand& c, OutputFiles& outputs, const tsp::TspProblem& problem,
                    const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
                    std::optional<double> optimum, double setup_s,
-                   const std::vector<aco::IterationReport>& trace) {
+                   const std::vector<aco::IterationReport>& trace,
+                   const std::optional<aco::IslandSettings>& islands,
+                   const std::optional<aco::IslandResult>& island) {
   const tsp::Instance& instance = problem.instance();
   if (!c.tour_out.empty())
     outputs.write(c.tour_out, [&](std::ostream& out) {
@@ -113,6 +128,15 @@ void write_outputs(const TspCommand& c, OutputFiles& outputs, const tsp::TspProb
                         {"setup_s", setup_s},
                         {"time_to_best_s", result.time_to_best_s},
                         {"stop_reason", aco::to_string(result.reason)}};
+    if (islands && island) {
+      j["colonies"] = islands->colonies;
+      j["exchange_every"] = islands->exchange_every;
+      j["topology"] = aco::to_string(islands->topology);
+      j["best_colony"] = island->best_colony;
+      j["colony_best_lengths"] = island->colony_best;
+      j["exchanges"] = island->exchanges;
+      j["exchange_s"] = island->exchange_s;
+    }
     if (optimum) {
       j["optimum"] = *optimum;
       j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
@@ -123,6 +147,9 @@ void write_outputs(const TspCommand& c, OutputFiles& outputs, const tsp::TspProb
 }
 
 void run(const TspCommand& c) {
+  dist::Communicator& world = command_world();
+  const std::optional<aco::IslandSettings> islands = island_settings(c.islands, world, "tsp");
+  const bool root = world.is_root();  // under MPI, rank 0 alone prints and writes
   const tsp::SolverSettings settings = solver_settings(c.algorithm);
   OutputFiles outputs;
   if (!c.tour_out.empty()) outputs.add(c.tour_out);
@@ -142,13 +169,13 @@ void run(const TspCommand& c) {
       .max_iterations = c.iterations, .time_limit_s = c.time_s, .cpu_time_limit_s = c.cpu_time_s};
   if (!termination.bounded()) {
     termination.time_limit_s = 10.0;
-    if (!c.quiet)
+    if (!c.quiet && root)
       std::cout
           << "no budget given: stopping after 10 s (set --iterations, --time or --cpu-time)\n";
   }
   if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
 
-  Progress progress(!c.quiet && stderr_is_terminal());
+  Progress progress(!c.quiet && root && stderr_is_terminal());
   std::vector<aco::IterationReport> trace;
   const auto observer = [&](const aco::IterationReport& r) {
     if (!c.trace_csv.empty()) trace.push_back(r);
@@ -159,7 +186,14 @@ void run(const TspCommand& c) {
          << r.elapsed_s << " s";
     progress.update(line.str());
   };
-  const aco::RunResult result = tsp::solve(problem, settings, termination, observer);
+  std::optional<aco::IslandResult> island;
+  if (islands)
+    island = tsp::solve_islands(
+        problem, settings, termination, *islands,
+        world.size() > 1 ? island_exchange(world) : aco::Exchange(aco::in_process_exchange),
+        [&](const aco::IslandReport& r) { observer(r.run); });
+  const aco::RunResult result =
+      island ? island->run : tsp::solve(problem, settings, termination, observer);
   progress.clear();
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count() -
@@ -169,12 +203,15 @@ void run(const TspCommand& c) {
   if (length != result.best.cost)
     throw std::logic_error("internal error: the best tour's length does not match its cost");
 
+  if (!root) return;
   if (c.quiet) {
     std::cout << "Best " << std::setprecision(15) << length << '\n';
   } else {
     print_summary(c, problem, settings, result, length, optimum, setup_s);
+    if (island) print_islands(*islands, *island);
   }
-  write_outputs(c, outputs, problem, settings, result, length, optimum, setup_s, trace);
+  write_outputs(c, outputs, problem, settings, result, length, optimum, setup_s, trace, islands,
+                island);
 }
 
 }  // namespace
@@ -184,6 +221,7 @@ void add_tsp_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("tsp", "Solve a TSPLIB instance with an ACO variant");
   sub->add_option("-i,--instance,--tsplibfile", command->instance, "TSPLIB .tsp file")->required();
   add_tsp_options(*sub, command->algorithm, true);
+  add_island_options(*sub, command->islands);
   for (const aco::VariantInfo& info : aco::kVariants)  // ACOTSP's --as, --eas, ..., --mmas
     sub->add_flag_callback(
         "--" + std::string(info.name),

@@ -52,7 +52,7 @@ _PROBLEM = {"candidates": "candidates", "matrix_limit": "matrix_limit"}
 
 def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3opt",
           neighbours=10, time_limit=0.0, cpu_time_limit=0.0, target=None, stagnation=0,
-          observer=None, **options):
+          observer=None, colonies=1, exchange_every=25, topology="ring", **options):
     """Solves the instance with an ACO variant (as, eas, ras, acs, mmas, hybrid).
 
     local_search: none, 2opt, 2.5opt, 3opt; neighbours: cities the local search tries per city.
@@ -64,7 +64,10 @@ def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3op
     glob_best_freq, tau_max, tau_init, hybrid_deposit, ls_ants, ls_start, candidates,
     matrix_limit, backend (auto, serial, omp, tbb), threads, focused_edges (new edges per
     focused ant, Skinderowicz 2022; 0: every tour built from nothing). Zero means the variant's default
-    where the program says so. The same options and seed give the program's tour."""
+    where the program says so. colonies > 1: the island model in this process (docs/mpi-islands.md),
+    colonies exchanging their best tours every exchange_every iterations along topology (ring,
+    full); the observer's `best` is then empty. The same options and seed give the program's
+    tour."""
     settings = _core.tsp.SolverSettings()
     problem = _core.tsp.ProblemSettings()
     parameters = {k: options.pop(k) for k in list(options) if k in _options.ENGINE}
@@ -79,5 +82,5 @@ def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3op
     run = _core.tsp.solve_settings(
         instance, settings, problem,
         _options.termination(iterations, time_limit, cpu_time_limit, target, stagnation),
-        observer)
+        observer, colonies, exchange_every, topology)
     return Result.of(run)

@@ -39,13 +39,27 @@ std::vector<std::uint32_t> tour_of(const tsp::Instance& instance, const py::obje
 
 aco::RunResult solve(const tsp::Instance& instance, const tsp::SolverSettings& settings,
                      const tsp::ProblemSettings& problem_settings,
-                     const aco::Termination& termination, const py::object& observer) {
+                     const aco::Termination& termination, const py::object& observer,
+                     std::size_t colonies, std::uint64_t exchange_every,
+                     const std::string& topology) {
   aco::resolve(settings.backend, settings.threads);  // serial on several threads fails here
+  if (topology != "ring" && topology != "full") unknown_name("topology", topology, "ring, full");
+  if (colonies == 0) throw std::invalid_argument("colonies: must be >= 1");
+  const aco::IslandSettings islands{
+      .colonies = colonies,
+      .exchange_every = exchange_every,
+      .topology = topology == "full" ? aco::Topology::full : aco::Topology::ring};
   return run_interruptible([&](PythonThread& python) {
     const tsp::TspProblem problem(instance, problem_settings);
     aco::Termination t = termination;
     t.stop = python.stop_token();
-    return tsp::solve(problem, settings, t, colony_observer(observer, python));
+    const aco::Observer each = colony_observer(observer, python);
+    if (colonies == 1) return tsp::solve(problem, settings, t, each);
+    return tsp::solve_islands(problem, settings, t, islands, aco::in_process_exchange,
+                              [&](const aco::IslandReport& r) {
+                                if (each) each(r.run);
+                              })
+        .run;
   });
 }
 
@@ -167,6 +181,7 @@ void bind_tsp(py::module_& m) {
 
   m.def("solve_settings", &solve, py::arg("instance"), py::arg("settings"),
         py::arg("problem_settings"), py::arg("termination"), py::arg("observer"),
+        py::arg("colonies") = 1, py::arg("exchange_every") = 25, py::arg("topology") = "ring",
         "tsp::solve with explicit settings; antslam.tsp.solve takes keyword arguments");
 }
 

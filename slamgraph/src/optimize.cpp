@@ -29,6 +29,9 @@ void validate(const OptimizeSettings& s) {
   require(p.ants <= kMaxAnts, "ants must be <= 100000 (0: the variant's default)");
   require(s.ceres.max_iterations > 0, "ceres iterations must be positive");
   validate(s.refine);
+  require(!s.islands || aco_variant(s.method).has_value(), "colonies need an ACO method");
+  require(!s.islands || !s.refine_each_improvement,
+          "refining every improvement needs one colony (the islands' paths travel rarely)");
 }
 
 namespace {

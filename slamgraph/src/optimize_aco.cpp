@@ -67,9 +67,16 @@ void run_aco(const FragmentSet& set, const OptimizeSettings& settings, Recorder&
     recorder.improve(r.iteration, r.iteration * ants + refine_evaluations, best);
   };
   const aco::RunResult run_result =
-      aco::with_backend(settings.backend, settings.threads, [&](auto backend) {
-        return aco::solve(problem, p, termination, backend, aco::NoLocalSearch{}, observe);
-      });
+      settings.islands
+          ? aco::solve_islands(
+                problem, p, termination,
+                [&] { return aco::make_backend(settings.backend, settings.threads); },
+                aco::NoLocalSearch{}, *settings.islands, settings.exchange,
+                [&](const aco::IslandReport& r) { observe(r.run); })
+                .run
+          : aco::with_backend(settings.backend, settings.threads, [&](auto backend) {
+              return aco::solve(problem, p, termination, backend, aco::NoLocalSearch{}, observe);
+            });
   result.iterations = run_result.iterations;
   result.colony = run_result.settings;
   result.choice = run_result.best.path;

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numeric>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "aco/random.hpp"
@@ -19,14 +20,13 @@ namespace antslam::aco::testing {
 
 class EuclideanTsp {
  public:
-  EuclideanTsp(std::size_t n, std::size_t k, std::uint64_t seed) : n_(n), k_(k) {
-    Rng rng(seed);
-    x_.resize(n);
-    y_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      x_[i] = 1000.0 * rng.uniform();
-      y_[i] = 1000.0 * rng.uniform();
-    }
+  EuclideanTsp(std::size_t n, std::size_t k, std::uint64_t seed)
+      : EuclideanTsp(random_coordinates(n, seed), k) {}
+
+  /// Cities at the given (x, y) points.
+  EuclideanTsp(std::pair<std::vector<double>, std::vector<double>> xy, std::size_t k)
+      : n_(xy.first.size()), k_(k), x_(std::move(xy.first)), y_(std::move(xy.second)) {
+    const std::size_t n = n_;
     candidates_.resize(n * k);
     std::vector<std::uint32_t> order(n);
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -38,6 +38,17 @@ class EuclideanTsp {
       for (std::uint32_t j : order)
         if (j != i && r < k) candidates_[i * k + r++] = j;
     }
+  }
+
+  static std::pair<std::vector<double>, std::vector<double>> random_coordinates(
+      std::size_t n, std::uint64_t seed) {
+    Rng rng(seed);
+    std::pair<std::vector<double>, std::vector<double>> xy;
+    for (std::size_t i = 0; i < n; ++i) {
+      xy.first.push_back(1000.0 * rng.uniform());
+      xy.second.push_back(1000.0 * rng.uniform());
+    }
+    return xy;
   }
 
   std::size_t size() const { return n_; }

@@ -66,6 +66,20 @@ def test_focused_construction_as_the_program(program, tmp_path):
     assert not np.array_equal(plain.tour, focused.tour)  # the option reaches the engine
 
 
+def test_islands_as_the_program(program, tmp_path):
+    path = DATA / "tsplib" / "pcb442.tsp"
+    program("tsp", "--instance", path, "--iterations", 20, "--seed", 4, "--colonies", 3,
+            "--exchange-every", 4, "--topology", "full", "--tour-out", tmp_path / "k3.tour")
+    instance = antslam.tsp.read(path)
+    islands = antslam.tsp.solve(instance, iterations=20, seed=4, colonies=3, exchange_every=4,
+                                topology="full")
+    assert np.array_equal(instance.read_tour(tmp_path / "k3.tour"), islands.tour)
+    plain = antslam.tsp.solve(instance, iterations=20, seed=4)
+    assert not np.array_equal(plain.tour, islands.tour)  # the colonies reach the engine
+    with pytest.raises(ValueError, match="topology"):
+        antslam.tsp.solve(instance, iterations=2, colonies=2, topology="star")
+
+
 def test_the_observer_hears_every_iteration():
     instance = antslam.tsp.read(FIXTURES / "burma14.tsp")
     reports = []

@@ -55,4 +55,17 @@ aco::RunResult solve(const TspProblem& problem, const SolverSettings& settings,
                     TourLocalSearch(settings.local_search), observer);
 }
 
+aco::IslandResult solve_islands(const TspProblem& problem, const SolverSettings& settings,
+                                const aco::Termination& termination,
+                                const aco::IslandSettings& islands, const aco::Exchange& exchange,
+                                const aco::IslandObserver& observer) {
+  const aco::Parameters p = resolved_parameters(problem, settings);
+  const auto make_backend = [&] { return aco::make_backend(settings.backend, settings.threads); };
+  if (!has_local_search(settings))
+    return aco::solve_islands(problem, p, termination, make_backend, aco::NoLocalSearch{}, islands,
+                              exchange, observer);
+  return aco::solve_islands(problem, p, termination, make_backend,
+                            TourLocalSearch(settings.local_search), islands, exchange, observer);
+}
+
 }  // namespace antslam::tsp

@@ -223,14 +223,7 @@ class Colony {
     using Clock = StopToken::Clock;
     const auto start = Clock::now();
     const double cpu_start = StopToken::cpu_seconds();
-    const StopToken stop(termination.time_limit_s > 0.0
-                             ? start + std::chrono::duration_cast<Clock::duration>(
-                                           std::chrono::duration<double>(termination.time_limit_s))
-                             : Clock::time_point::max(),
-                         termination.cpu_time_limit_s > 0.0
-                             ? cpu_start + termination.cpu_time_limit_s
-                             : std::numeric_limits<double>::infinity(),
-                         termination.stop);
+    const StopToken stop = budget_token(termination, start, cpu_start);
     RunResult result;
     for (;;) {
       IterationReport report = step(stop);
@@ -262,11 +255,30 @@ class Colony {
     }
     result.best = best_;
     result.iterations = iteration_;
-    result.settings.colony = settings_;
-    result.settings.local_search = kHasLocalSearch;
-    result.settings.backend = backend_.kind();
-    result.settings.threads = backend_.threads();
+    result.settings = run_settings();
     return result;
+  }
+
+  /// What this colony runs with (the variant and rho are left to solve()).
+  RunSettings run_settings() const {
+    RunSettings ran;
+    ran.colony = settings_;
+    ran.local_search = kHasLocalSearch;
+    ran.backend = backend_.kind();
+    ran.threads = backend_.threads();
+    return ran;
+  }
+
+  /// Island model (Manfrin et al. 2006): an immigrant, another colony's best-so-far, replaces
+  /// this colony's best-so-far when it is strictly better. The pheromone updates read it from the
+  /// next iteration on (IterationView::global_best: MMAS's trail limits, the best-so-far deposits
+  /// of EAS, RAS, ACS and the hybrid) and so do focused ants choosing their source; an update that
+  /// keeps a best of its own (MMAS's restart-best) adopts it too. Returns whether it was taken.
+  bool receive(const Solution& immigrant) {
+    if (!(immigrant.cost < best_.cost)) return false;
+    best_ = immigrant;
+    if constexpr (requires { update_.adopt(best_); }) update_.adopt(best_);
+    return true;
   }
 
   const Problem& problem() const { return *problem_; }

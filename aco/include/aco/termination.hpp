@@ -78,4 +78,18 @@ class StopToken {
   std::stop_token request_;  // a stop requested from outside
 };
 
+/// The token that ends long phases once termination's clocks run out: the wall-clock budget
+/// counted from `start`, the CPU-time budget from `cpu_start` (StopToken::cpu_seconds()).
+inline StopToken budget_token(const Termination& termination, StopToken::Clock::time_point start,
+                              double cpu_start) {
+  using Clock = StopToken::Clock;
+  return StopToken(termination.time_limit_s > 0.0
+                       ? start + std::chrono::duration_cast<Clock::duration>(
+                                     std::chrono::duration<double>(termination.time_limit_s))
+                       : Clock::time_point::max(),
+                   termination.cpu_time_limit_s > 0.0 ? cpu_start + termination.cpu_time_limit_s
+                                                      : std::numeric_limits<double>::infinity(),
+                   termination.stop);
+}
+
 }  // namespace antslam::aco

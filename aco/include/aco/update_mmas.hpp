@@ -35,13 +35,14 @@ class MaxMinUpdate {
     set_bounds(c.reference_cost);
     trail.fill(tau_max_);
     restart_best_ = Solution{};
-    restart_iteration_ = restart_found_best_ = 0;
+    restart_iteration_ = restart_found_best_ = last_iteration_ = 0;
     restarts_ = 0;
     u_gb_ = 25;
   }
 
   template <class Trail>
   void apply(Trail& trail, const IterationView& v) {
+    last_iteration_ = v.iteration;
     if (v.iteration_best.cost < restart_best_.cost) {
       restart_best_ = v.iteration_best;
       restart_found_best_ = v.iteration;
@@ -69,6 +70,15 @@ class MaxMinUpdate {
       restart_iteration_ = v.iteration;
       ++restarts_;
     }
+  }
+
+  /// An immigrant (Colony::receive) better than the restart-best becomes the restart-best,
+  /// found at the iteration boundary where it arrived: the scheduled best deposits (every u_gb
+  /// iterations) lay it, and the restart test counts its age from its arrival.
+  void adopt(const Solution& immigrant) {
+    if (!(immigrant.cost < restart_best_.cost)) return;
+    restart_best_ = immigrant;
+    restart_found_best_ = last_iteration_;
   }
 
   const MaxMinSettings& settings() const { return s_; }
@@ -122,6 +132,7 @@ class MaxMinUpdate {
   std::uint64_t restart_iteration_ = 0;
   std::uint64_t restart_found_best_ = 0;
   std::uint64_t restarts_ = 0;
+  std::uint64_t last_iteration_ = 0;  ///< the last iteration applied
   std::uint64_t u_gb_ = 25;
 };
 

@@ -150,12 +150,9 @@ inline ColonySettings colony_settings(const Parameters& p, std::size_t decisions
   return settings;
 }
 
-/// Builds the colony of p.variant on `problem` (defaults resolved) and returns f(colony): the
-/// one place where Parameters become a Colony, for callers that step it themselves.
-template <class Problem, class LocalSearch = NoLocalSearch, class Exec = AnyBackend, class F>
-decltype(auto) with_colony(const Problem& problem, const Parameters& p, Exec backend,
-                           LocalSearch local_search, F&& f) {
-  constexpr bool kLs = !std::is_same_v<LocalSearch, NoLocalSearch>;
+/// Colony settings of p on `problem` (p validated first).
+template <class Problem>
+ColonySettings colony_settings_for(const Problem& problem, const Parameters& p, bool local_search) {
   constexpr bool kPermutation = PermutationProblem<Problem>;
   std::size_t decisions = 0;
   if constexpr (kPermutation) {
@@ -166,7 +163,16 @@ decltype(auto) with_colony(const Problem& problem, const Parameters& p, Exec bac
     decisions = problem.layer_count();
   }
   validate(p);
-  const ColonySettings settings = colony_settings(p, decisions, kPermutation, kLs);
+  return colony_settings(p, decisions, kPermutation, local_search);
+}
+
+/// Builds the colony of p.variant on `problem` (defaults resolved) and returns f(colony): the
+/// one place where Parameters become a Colony, for callers that step it themselves.
+template <class Problem, class LocalSearch = NoLocalSearch, class Exec = AnyBackend, class F>
+decltype(auto) with_colony(const Problem& problem, const Parameters& p, Exec backend,
+                           LocalSearch local_search, F&& f) {
+  constexpr bool kLs = !std::is_same_v<LocalSearch, NoLocalSearch>;
+  const ColonySettings settings = colony_settings_for(problem, p, kLs);
   return with_variant_policies(p, resolved_rho(p, kLs), [&](auto rule, auto update) {
     Colony<Problem, decltype(rule), decltype(update), LocalSearch, Exec> colony(
         problem, settings, rule, update, std::move(local_search), std::move(backend));

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "aco/backend_kind.hpp"
+#include "aco/islands.hpp"
 #include "aco/variants.hpp"
 #include "slamgraph/ceres_baseline.hpp"
 #include "slamgraph/fragment_set.hpp"
@@ -71,6 +72,11 @@ struct OptimizeSettings {
   CeresSettings ceres;                   ///< Ceres baselines
   std::uint64_t max_exhaustive_paths = 1'000'000'000;  ///< exhaustive: refuse larger trees (count)
   std::vector<Pose2> initial;  ///< start of nlopt / ceres (N - 1 alignments); empty = means
+  std::optional<aco::IslandSettings> islands;  ///< ACO methods: the island model, this process's
+                                               ///< share of K colonies (aco/islands.hpp);
+                                               ///< empty: one colony
+  aco::Exchange exchange = aco::in_process_exchange;  ///< gathers the islands' offers (all in
+                                                      ///< this process: the identity)
   std::stop_token stop{};  ///< once stop is requested (a user's Ctrl-C), the colony ends after its
                            ///< iteration, random search after its round and NLopt at its next
                            ///< evaluation (refine.stop is set from it); Ceres runs to its end

@@ -11,6 +11,7 @@
 
 #include "aco/backend_kind.hpp"
 #include "aco/colony.hpp"
+#include "aco/islands.hpp"
 #include "aco/termination.hpp"
 #include "aco/variants.hpp"
 #include "tsp/local_search.hpp"
@@ -47,5 +48,15 @@ double resolved_rho(const SolverSettings& settings);
 /// Throws std::invalid_argument for the serial backend on more than one thread.
 aco::RunResult solve(const TspProblem& problem, const SolverSettings& settings,
                      const aco::Termination& termination, const aco::Observer& observer = {});
+
+/// The island model (aco/islands.hpp) of settings.aco.variant: this process runs
+/// islands.first .. first + local - 1 of the K colonies, each on its own settings.backend with
+/// settings.threads; `exchange` gathers the colonies' offers (aco::in_process_exchange when all
+/// run here). Colony c is seeded with aco::colony_seed(settings.aco.seed, c).
+aco::IslandResult solve_islands(const TspProblem& problem, const SolverSettings& settings,
+                                const aco::Termination& termination,
+                                const aco::IslandSettings& islands,
+                                const aco::Exchange& exchange = aco::in_process_exchange,
+                                const aco::IslandObserver& observer = {});
 
 }  // namespace antslam::tsp
