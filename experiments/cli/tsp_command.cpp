@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "aco/variant.hpp"
+#include "cli/command_world.hpp"
 #include "cli/json_output.hpp"
 #include "cli/output_files.hpp"
 #include "cli/progress.hpp"
