@@ -122,8 +122,14 @@ std::vector<slam::OptimizeResult> run_share(const Subject& subject, const Optimi
   return slam::run_trials(*subject.set, o.s, trials, finished, convergence);
 }
 
-/// Every trial of the study, farmed over the command's processes (cli/farm.hpp).
+/// Every trial of the study, farmed over the command's processes (cli/farm.hpp); the one trial
+/// of an island run runs on every process instead, each with its colonies, and every process
+/// receives its result (aco/islands.hpp).
 std::vector<slam::OptimizeResult> run_study(const Subject& subject, const OptimizeOptions& o) {
+  if (o.s.islands) {
+    const std::size_t first_trial = 0;
+    return in_context_of(o.input, [&] { return run_share(subject, o, {&first_trial, 1}); });
+  }
   return farm<slam::OptimizeResult>(
       command_world(), o.trials,
       [&](std::span<const std::size_t> share) {
