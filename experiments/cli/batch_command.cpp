@@ -108,8 +108,9 @@ std::string capture_stdout(F&& f) {
   return text;
 }
 
-/// Throws an error of the failure's kind (so that it keeps its exit status) with this message.
-[[noreturn]] void throw_as(const Failure& failure, const std::string& message) {
+/// Throws the failure as an error of its kind (so that it keeps its exit status).
+[[noreturn]] void throw_as(const Failure& failure) {
+  const std::string& message = failure.message;
   switch (failure.status) {
     case ExitStatus::usage:
       throw UsageError(message);
@@ -142,10 +143,10 @@ JobLog run_job(const Job& job, const std::string& jobs_file, bool keep_going) {
             }),
             {}};
   } catch (...) {
-    const Failure failure = failure_of(std::current_exception());
-    const std::string message = jobs_file + ":" + std::to_string(job.line) + ": " + failure.message;
-    if (!keep_going) throw_as(failure, message);
-    return {{}, {true, static_cast<int>(failure.status), message}};
+    Failure failure = failure_of(std::current_exception());
+    failure.message = jobs_file + ":" + std::to_string(job.line) + ": " + failure.message;
+    if (!keep_going) throw_as(failure);
+    return {{}, outcome_of(failure)};
   }
 }
 

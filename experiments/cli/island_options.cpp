@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cli/errors.hpp"
+#include "cli/farm.hpp"
 #include "dist/byte_stream.hpp"
 #include "dist/outcome.hpp"
 #include "validators.hpp"
@@ -61,8 +62,7 @@ aco::Exchange island_exchange(dist::Communicator& comm) {
     dist::Outcome outcome;
     dist::ByteWriter out;
     if (failure) {
-      const Failure f = failure_of(failure);
-      outcome = {true, static_cast<int>(f.status), f.message};
+      outcome = outcome_of(failure_of(failure));
     } else {
       out.value(static_cast<std::uint64_t>(local.size()));
       for (const aco::Offer& o : local) {

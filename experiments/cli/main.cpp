@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "cli/errors.hpp"
+#include "cli/farm.hpp"
 #include "cli/interrupts.hpp"
 #include "commands.hpp"
 #include "dist/communicator.hpp"
@@ -86,7 +87,7 @@ int main(int argc, char** argv) {
   }
   // Every rank reaches this point, whether its command failed or not.
   antslam::dist::Outcome mine;
-  if (failure) mine = {true, static_cast<int>(failure->status), failure->message};
+  if (failure) mine = antslam::cli::outcome_of(*failure);
   try {
     antslam::dist::gather_outcomes(world, mine);
   } catch (const antslam::dist::RankFailure& e) {

@@ -2,6 +2,10 @@
 
 namespace antslam::cli {
 
+dist::Outcome outcome_of(const Failure& failure) {
+  return {true, static_cast<int>(failure.status), failure.message};
+}
+
 std::vector<std::size_t> share_of(std::size_t count, std::size_t rank, std::size_t size) {
   if (size == 0 || rank >= size)
     throw std::invalid_argument("share_of: rank " + std::to_string(rank) + " of " +

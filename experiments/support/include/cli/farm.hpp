@@ -17,6 +17,9 @@
 
 namespace antslam::cli {
 
+/// A failure as the outcome a rank carries through a collective (dist/outcome.hpp).
+dist::Outcome outcome_of(const Failure& failure);
+
 /// The runs of rank `rank` of `size`: every i < count with i % size == rank, ascending.
 std::vector<std::size_t> share_of(std::size_t count, std::size_t rank, std::size_t size);
 
@@ -40,8 +43,7 @@ std::vector<T> farm(dist::Communicator& comm, std::size_t count, RunShare&& run_
                              " results for " + std::to_string(mine.size()) + " runs");
     for (const T& r : results) write(out, r);
   } catch (...) {
-    const Failure failure = failure_of(std::current_exception());
-    outcome = {true, static_cast<int>(failure.status), failure.message};
+    outcome = outcome_of(failure_of(std::current_exception()));
   }
   const auto payloads = dist::gather_outcomes(comm, outcome, out.bytes());
   std::vector<T> all(count);
