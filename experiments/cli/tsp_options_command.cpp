@@ -90,9 +90,9 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
   command
       .add_option("--focused-edges", o.solver.focused_edges,
                   "focused construction: ants change the source tour and copy it after adding "
-                  "this many edges of their own (0: build every tour from nothing)")
-      ->check(count_in(0, 1'000'000))
-      ->capture_default_str();
+                  "this many edges of their own (0: build every tour from nothing; default: 8 "
+                  "for mmas, 0 for the other variants)")
+      ->check(count_in(0, 1'000'000));
   command
       .add_option("--source-global-best", p.focused.global_best_source,
                   "focused construction: probability that the source is the best-so-far tour "

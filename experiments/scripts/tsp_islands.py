@@ -5,7 +5,8 @@ their best tours every 25 iterations along a ring) and, right after it, two plai
 `antslam tsp --time T` at the same time, one per core, seeded as the island run's colonies are
 (colony 0: s, colony 1: aco::colony_seed(s, 1)), so that each pair differs only in the
 exchange; the better of the two plain runs is "independent". Every run uses the TSP defaults
-(MAX-MIN Ant System, 25 ants, rho 0.2, 3-opt local search, no focused construction). Writes
+(MAX-MIN Ant System, 25 ants, rho 0.2, 3-opt local search) but builds its tours from nothing
+(--focused-edges 0), as when docs/mpi-islands.md was measured. Writes
 tsp-islands.csv (every run), table.md (mean excess over the optimum per instance, wins, the
 share of the island runs' time spent in the exchange) and tsp-islands.png into the results
 folder. pr2392 (data/tsplib) at 30 s with 5 seeds, d15112 (../shared/data/tsplib, when it is
@@ -66,7 +67,7 @@ def mpi_environment():
 
 def tsp_command(args, path, seed, budget, json_path, *extra):
     return [args.antslam, "tsp", "-i", path, "--seed", str(seed), *budget, "--json", json_path,
-            "--quiet", *map(str, extra)]
+            "--focused-edges", "0", "--quiet", *map(str, extra)]
 
 
 def island_run(args, path, seed, budget, json_path, *extra):

@@ -56,14 +56,19 @@ def test_same_seed_same_tour_as_the_program(program, tmp_path):
 
 
 def test_focused_construction_as_the_program(program, tmp_path):
-    path = DATA / "tsplib" / "eil51.tsp"
-    program("tsp", "--instance", path, "--variant", "mmas", "--iterations", 30, "--seed", 2,
-            "--focused-edges", 8, "--tour-out", tmp_path / "f.tour")
+    path = DATA / "tsplib" / "pcb442.tsp"
+    program("tsp", "--instance", path, "--variant", "mmas", "--iterations", 5, "--seed", 2,
+            "--focused-edges", 4, "--tour-out", tmp_path / "f.tour")
     instance = antslam.tsp.read(path)
-    focused = antslam.tsp.solve(instance, iterations=30, seed=2, focused_edges=8)
+    focused = antslam.tsp.solve(instance, iterations=5, seed=2, focused_edges=4)
     assert np.array_equal(instance.read_tour(tmp_path / "f.tour"), focused.tour)
-    plain = antslam.tsp.solve(instance, iterations=30, seed=2)
-    assert not np.array_equal(plain.tour, focused.tour)  # the option reaches the engine
+    # MAX-MIN's default is focused construction with 8 new edges; 0 builds from nothing.
+    default = antslam.tsp.solve(instance, iterations=5, seed=2)
+    assert np.array_equal(default.tour, antslam.tsp.solve(instance, iterations=5, seed=2,
+                                                          focused_edges=8).tour)
+    plain = antslam.tsp.solve(instance, iterations=5, seed=2, focused_edges=0)
+    assert not np.array_equal(plain.tour, default.tour)  # the option reaches the engine
+    assert not np.array_equal(focused.tour, default.tour)
 
 
 def test_islands_as_the_program(program, tmp_path):

@@ -166,14 +166,19 @@ TEST(Solver, ResolvesTheTspDefaults) {
   EXPECT_DOUBLE_EQ(resolved_parameters(problem, s).hybrid_deposit, 5.0);
 }
 
-TEST(Solver, FocusedConstructionIsOffUnlessAsked) {
+TEST(Solver, FocusedConstructionIsMaxMinsDefault) {
   const TspProblem& problem = instance_problem("eil51");
   SolverSettings s;
+  EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 8U);
+  s.aco.variant = aco::Variant::acs;
   EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 0U);
   s.focused_edges = 5;
   EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 5U);
+  s.aco.variant = aco::Variant::mmas;
+  s.focused_edges = 0;
+  EXPECT_EQ(resolved_parameters(problem, s).focused.min_new_edges, 0U);
   const aco::RunResult r = solve(problem, s, {.max_iterations = 3});
-  EXPECT_EQ(r.settings.colony.focused.min_new_edges, 5U);
+  EXPECT_EQ(r.settings.colony.focused.min_new_edges, 0U);
 }
 
 TEST(Solver, NearestNeighbourLengthOfAHandMadeInstance) {

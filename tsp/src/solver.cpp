@@ -19,7 +19,7 @@ aco::Parameters resolved_parameters(const TspProblem& problem, const SolverSetti
   aco::Parameters p = settings.aco;
   p.ants = resolved_ants(problem, settings);
   p.rho = resolved_rho(settings);
-  p.focused.min_new_edges = settings.focused_edges;
+  p.focused.min_new_edges = settings.focused_edges.value_or(default_focused_edges(p.variant));
   if (p.variant == aco::Variant::hybrid)
     p.hybrid_deposit =
         settings.hybrid_deposit > 0.0 ? settings.hybrid_deposit : nearest_neighbour_length(problem);

@@ -2,12 +2,14 @@
 // The plain entry point: any ACO variant with any TSP local search on any backend, chosen at
 // run time (aco::solve with the TSP's defaults).
 //
-// TSP defaults on top of the engine's (aco/variants.hpp): ants = n without local search and 25 with
-// it (ACS 10, hybrid 20); the hybrid's deposit numerator Q is the nearest-neighbour tour length
-// C_nn, so that a tour as good as the greedy one deposits 1 (with Q = 1 of eq. 12 a deposit of 1/L
-// ~ 1e-5 would be lost against tau_init = 100).
+// TSP defaults on top of the engine's (aco/variants.hpp): focused construction for MAX-MIN (8 new
+// edges per ant); ants = n without local search and 25 with it (ACS 10, hybrid 20); the hybrid's
+// deposit numerator Q is the nearest-neighbour tour length C_nn, so that a tour as good as the
+// greedy one deposits 1 (with Q = 1 of eq. 12 a deposit of 1/L ~ 1e-5 would be lost against
+// tau_init = 100).
 
 #include <cstddef>
+#include <optional>
 
 #include "aco/backend_kind.hpp"
 #include "aco/colony.hpp"
@@ -19,11 +21,19 @@
 
 namespace antslam::tsp {
 
+/// Focused construction's default for the TSP: MAX-MIN ants change the previous iteration's
+/// best tour in at least 8 edges (FocusedACO, Skinderowicz 2022); the other variants build
+/// every tour from nothing (ACS's greedy choices rarely leave the source: with focus it stalls
+/// on eil51). Chosen on generated instances only (docs/tsp-results.md, "Focused construction").
+constexpr std::size_t default_focused_edges(aco::Variant v) {
+  return v == aco::Variant::mmas ? 8 : 0;
+}
+
 struct SolverSettings {
   aco::Parameters aco;  ///< variant and its parameters (0 = variant default); aco.focused's
                         ///< min_new_edges is set from focused_edges
-  std::size_t focused_edges = 0;     ///< new edges per focused ant (FocusedACO, Skinderowicz
-                                     ///< 2022); 0 = every tour built from nothing
+  std::optional<std::size_t> focused_edges;  ///< new edges per focused ant; 0 = off; empty =
+                                             ///< default_focused_edges(variant)
   LocalSearchSettings local_search;  ///< improves every ant, or the aco.local_search_ants best
   double hybrid_deposit = 0.0;       ///< hybrid's deposit numerator Q; 0 = C_nn (tour length)
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< runs the ants of an iteration
