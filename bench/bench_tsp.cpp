@@ -4,10 +4,11 @@
 //
 //   build/bench/bench_tsp --benchmark_filter=Construct
 //   build/bench/bench_tsp --benchmark_filter=ConstructFallback
-//   build/bench/bench_tsp --benchmark_filter=LocalSearch
+//   build/bench/bench_tsp --benchmark_filter=LocalSearch   (array and two-level tours)
 
 #include <benchmark/benchmark.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <span>
@@ -122,13 +123,15 @@ BENCHMARK(BM_ConstructFallback)
     ->ArgNames({"instance", "grid"})
     ->Unit(benchmark::kMillisecond);
 
-/// Arguments: instance index, local search kind. One benchmark iteration improves one freshly
-/// constructed ant tour (construction excluded from the timing).
+/// Arguments: instance index, local search kind, tour (0: array, 1: two-level). One benchmark
+/// iteration improves one freshly constructed ant tour (construction excluded from the timing).
 void BM_LocalSearch(benchmark::State& state) {
   const tsp::TspProblem& p = problem(static_cast<std::size_t>(state.range(0)));
   const auto kind = static_cast<tsp::LocalSearchKind>(state.range(1));
   auto family = fresh_family(p, 1);
-  const tsp::TourLocalSearch ls({.kind = kind});
+  const bool two_level = state.range(2) != 0;
+  const tsp::TourLocalSearch ls(
+      {.kind = kind, .two_level_from = two_level ? 0 : std::numeric_limits<std::size_t>::max()});
   auto workspace = ls.make_workspace(p);
   std::vector<std::uint32_t> tour;
   std::uint64_t round = 0, moves = 0;
@@ -148,11 +151,11 @@ void BM_LocalSearch(benchmark::State& state) {
   state.counters["moves"] = static_cast<double>(moves) / static_cast<double>(state.iterations());
   state.counters["gain_%"] = 100.0 * gain / static_cast<double>(state.iterations());
   state.SetLabel(kInstances[static_cast<std::size_t>(state.range(0))] + " " +
-                 std::string(tsp::to_string(kind)));
+                 std::string(tsp::to_string(kind)) + (two_level ? " two-level" : " array"));
 }
 BENCHMARK(BM_LocalSearch)
-    ->ArgsProduct({{1, 2, 3}, {1, 2, 3}})
-    ->ArgNames({"instance", "kind"})
+    ->ArgsProduct({{1, 2, 3}, {1, 2, 3}, {0, 1}})
+    ->ArgNames({"instance", "kind", "two_level"})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

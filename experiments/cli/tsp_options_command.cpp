@@ -46,6 +46,12 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
       ->check(CLI::IsMember({"changed", "all"}))
       ->capture_default_str();
   command
+      .add_option("--two-level-from", o.solver.local_search.two_level_from,
+                  "cities from which local search moves run on a two-level tour (O(sqrt n) a "
+                  "move) instead of an array (O(n))")
+      ->check(count_in(0, 1'000'000'000))
+      ->capture_default_str();
+  command
       .add_option("--candidates,--nnants", o.problem.candidates,
                   "nearest neighbours an ant chooses among (candidate list)")
       ->check(count_in(1, 1000))

@@ -46,7 +46,7 @@ class Result(Run):
 # Options beyond the engine's parameters, and the settings attribute each one sets.
 _SOLVER = {"local_search": "local_search", "ls_start": "ls_start", "backend": "backend",
            "threads": "threads", "hybrid_deposit": "hybrid_deposit",
-           "focused_edges": "focused_edges"}
+           "focused_edges": "focused_edges", "two_level_from": "two_level_from"}
 _PROBLEM = {"candidates": "candidates", "matrix_limit": "matrix_limit"}
 
 
@@ -61,9 +61,10 @@ def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3op
     iteration with an antslam.aco.IterationInfo (iteration, elapsed_s, iteration_best,
     global_best, improved, best). Further options, as the antslam tsp options of the same name:
     ants, alpha, beta, rho, q0, xi, elite_weight, rank_width, p_best, restarts, p0,
-    glob_best_freq, tau_max, tau_init, hybrid_deposit, ls_ants, ls_start, candidates,
-    matrix_limit, backend (auto, serial, omp, tbb), threads, focused_edges (new edges per
-    focused ant, Skinderowicz 2022; 0: every tour built from nothing). Zero means the variant's default
+    glob_best_freq, tau_max, tau_init, hybrid_deposit, ls_ants, ls_start, two_level_from,
+    candidates, matrix_limit, backend (auto, serial, omp, tbb), threads, focused_edges (new
+    edges per focused ant, Skinderowicz 2022; 0: every tour built from nothing; default 8 for
+    mmas, 0 for the other variants). Zero means the variant's default
     where the program says so. colonies > 1: the island model in this process (docs/mpi-islands.md),
     colonies exchanging their best tours every exchange_every iterations along topology (ring,
     full); the observer's `best` is then empty. The same options and seed give the program's

@@ -162,6 +162,10 @@ void bind_tsp(py::module_& m) {
           "ls_neighbours", [](const tsp::SolverSettings& s) { return s.local_search.neighbours; },
           [](tsp::SolverSettings& s, std::size_t n) { s.local_search.neighbours = n; })
       .def_property(
+          "two_level_from",
+          [](const tsp::SolverSettings& s) { return s.local_search.two_level_from; },
+          [](tsp::SolverSettings& s, std::size_t n) { s.local_search.two_level_from = n; })
+      .def_property(
           "ls_start",
           [](const tsp::SolverSettings& s) {
             return std::string(s.local_search.queue_changed_only ? "changed" : "all");

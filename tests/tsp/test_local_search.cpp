@@ -17,6 +17,15 @@ namespace {
 
 constexpr LocalSearchKind kKinds[] = {LocalSearchKind::two_opt, LocalSearchKind::two_half_opt,
                                       LocalSearchKind::three_opt};
+// two_level_from: moves on the array tour (never the two-level one) or always on the two-level.
+constexpr std::size_t kRepresentations[] = {1'000'000, 0};
+
+std::vector<std::pair<LocalSearchKind, std::size_t>> every_kind_and_representation() {
+  std::vector<std::pair<LocalSearchKind, std::size_t>> all;
+  for (LocalSearchKind kind : kKinds)
+    for (std::size_t from : kRepresentations) all.emplace_back(kind, from);
+  return all;
+}
 
 std::vector<Instance> property_cases() {
   std::vector<Instance> cases;
@@ -32,9 +41,10 @@ std::vector<Instance> property_cases() {
 TEST(LocalSearch, NeverLengthensKeepsAPermutationAndEveryMoveGains) {
   for (const Instance& instance : property_cases()) {
     const TspProblem problem(instance, {.ls_neighbours = 8});
-    for (LocalSearchKind kind : kKinds) {
-      SCOPED_TRACE(std::to_string(instance.size()) + " " + std::string(to_string(kind)));
-      const TourLocalSearch ls({.kind = kind, .neighbours = 8});
+    for (const auto& [kind, from] : every_kind_and_representation()) {
+      SCOPED_TRACE(std::to_string(instance.size()) + " " + std::string(to_string(kind)) + " " +
+                   std::to_string(from));
+      const TourLocalSearch ls({.kind = kind, .neighbours = 8, .two_level_from = from});
       auto workspace = ls.make_workspace(problem);
       aco::Rng rng(instance.size());
       for (int start = 0; start < 10; ++start) {
@@ -115,9 +125,11 @@ TEST(LocalSearch, WithFullListsReachesATrueLocalOptimum) {
   for (std::size_t n : {6U, 9U, 13U, 18U, 25U}) {
     for (EdgeWeightType type : {EdgeWeightType::euc_2d, EdgeWeightType::att}) {
       const TspProblem problem(testing::random_instance(n, 100 + n, type), {.ls_neighbours = n});
-      for (LocalSearchKind kind : kKinds) {
-        SCOPED_TRACE(std::to_string(n) + " " + std::string(to_string(kind)));
-        const TourLocalSearch ls({.kind = kind, .neighbours = n, .queue_changed_only = false});
+      for (const auto& [kind, from] : every_kind_and_representation()) {
+        SCOPED_TRACE(std::to_string(n) + " " + std::string(to_string(kind)) + " " +
+                     std::to_string(from));
+        const TourLocalSearch ls(
+            {.kind = kind, .neighbours = n, .queue_changed_only = false, .two_level_from = from});
         auto workspace = ls.make_workspace(problem);
         aco::Rng rng(n);
         for (int start = 0; start < 5; ++start) {

@@ -63,6 +63,7 @@ TEST(Solver, MmasWithoutLocalSearchGetsCloseOnEil51) {
 struct Configuration {
   aco::Variant variant;
   LocalSearchKind local_search;
+  std::size_t two_level_from = LocalSearchSettings{}.two_level_from;
 };
 
 class Determinism : public ::testing::TestWithParam<Configuration> {};
@@ -74,6 +75,7 @@ TEST_P(Determinism, SameResultOnEveryBackendAndThreadCount) {
   s.aco.ants = 12;
   s.aco.seed = 11;
   s.local_search.kind = GetParam().local_search;
+  s.local_search.two_level_from = GetParam().two_level_from;
   const aco::Termination t{.max_iterations = 25};
   const aco::RunResult reference = solve(problem, s, t);
   EXPECT_EQ(reference.settings.backend, aco::BackendKind::serial);
@@ -114,13 +116,15 @@ TEST(Solver, ResultRecordsTheSettingsThatRan) {
 INSTANTIATE_TEST_SUITE_P(
     Tsp, Determinism,
     ::testing::Values(Configuration{aco::Variant::mmas, LocalSearchKind::three_opt},
+                      Configuration{aco::Variant::mmas, LocalSearchKind::three_opt, 0},
                       Configuration{aco::Variant::acs, LocalSearchKind::two_half_opt},
                       Configuration{aco::Variant::hybrid, LocalSearchKind::two_opt},
                       Configuration{aco::Variant::ant_system, LocalSearchKind::none}),
     [](const auto& param_info) {
       std::string ls(to_string(param_info.param.local_search));
       std::replace(ls.begin(), ls.end(), '.', '_');
-      return std::string(aco::to_string(param_info.param.variant)) + "_" + ls;
+      return std::string(aco::to_string(param_info.param.variant)) + "_" + ls +
+             (param_info.param.two_level_from == 0 ? "_two_level" : "");
     });
 
 TEST(Solver, MmasRestartsWithLocalSearch) {

@@ -40,11 +40,15 @@ void TourLocalSearch::improve(const TspProblem& problem, std::vector<std::uint32
   const auto n = static_cast<std::uint32_t>(tour.size());
   // Don't-look bits: the active cities in random order (ACOTSP's random permutation).
   const bool changed_only = settings_.queue_changed_only && w.previous.size() == n;
-  if (changed_only) {
+  if (changed_only) {  // cities with a tour edge that is not in the previous tour
     std::fill(w.queued.begin(), w.queued.end(), 0);
-    for (std::uint32_t c = 0; c < n; ++c) {
-      const std::uint32_t s = w.tour.succ(c);
-      if (w.previous.succ(c) != s && w.previous.pred(c) != s) w.queued[c] = w.queued[s] = 1;
+    w.previous_position.resize(n);
+    for (std::uint32_t p = 0; p < n; ++p) w.previous_position[w.previous[p]] = p;
+    for (std::uint32_t p = 0; p < n; ++p) {
+      const std::uint32_t c = tour[p], s = tour[p + 1 == n ? 0 : p + 1];
+      const std::uint32_t q = w.previous_position[c];
+      if (w.previous[q + 1 == n ? 0 : q + 1] != s && w.previous[q == 0 ? n - 1 : q - 1] != s)
+        w.queued[c] = w.queued[s] = 1;
     }
   } else {
     std::fill(w.queued.begin(), w.queued.end(), 1);
@@ -89,21 +93,36 @@ bool TourLocalSearch::begin(const TspProblem& problem, const std::vector<std::ui
   if (settings_.kind == LocalSearchKind::none || tour.size() < 4) return false;  // n = 3: one tour
   if (tour.size() != problem.size())
     throw std::invalid_argument("local search: tour size differs from n");
-  w.tour.assign(tour, problem);
   return true;
 }
 
 void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_t>& tour,
                              Workspace& w, std::uint32_t count, const aco::StopToken& stop) const {
+  if (tour.size() >= settings_.two_level_from) {
+    w.large.assign(tour, problem);
+    run_queue(problem, w.large, w, count, stop);
+    w.large.copy_to(tour);
+  } else {
+    w.tour.assign(tour, problem);
+    run_queue(problem, w.tour, w, count, stop);
+    w.tour.copy_to(tour);
+  }
+  w.previous.assign(tour.begin(), tour.end());
+}
+
+template <class Tour>
+void TourLocalSearch::run_queue(const TspProblem& problem, Tour& moves_on, Workspace& w,
+                                std::uint32_t count, const aco::StopToken& stop) const {
   const auto n = static_cast<std::uint32_t>(problem.size());
   const std::size_t k = std::min(settings_.neighbours, problem.neighbours(0).size());
-  const auto step = settings_.kind == LocalSearchKind::two_opt        ? &detail::two_opt_step
-                    : settings_.kind == LocalSearchKind::two_half_opt ? &detail::two_half_opt_step
-                                                                      : &detail::three_opt_step;
+  const auto step = settings_.kind == LocalSearchKind::two_opt ? &detail::two_opt_step<Tour>
+                    : settings_.kind == LocalSearchKind::two_half_opt
+                        ? &detail::two_half_opt_step<Tour>
+                        : &detail::three_opt_step<Tour>;
   std::uint32_t head = 0;
   detail::Touched touched;
   // The stop token is polled every 64 cities and every 16 moves: on a poor tour of a million
-  // cities one city can take many moves, each reversing up to n / 2 cities.
+  // cities one city can take many moves, each reversing up to n / 2 cities of an array.
   while (count > 0 && !w.stats.stopped) {
     if ((++w.stats.examined & 63U) == 0 && stop.expired()) {
       w.stats.stopped = true;
@@ -113,7 +132,7 @@ void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_
     head = head + 1 == n ? 0 : head + 1;
     --count;
     w.queued[city] = 0;
-    while (step(problem, w.tour, city, k, touched)) {
+    while (step(problem, moves_on, city, k, touched)) {
       if ((++w.stats.moves & 15U) == 0 && stop.expired()) {
         w.stats.stopped = true;
         break;
@@ -132,9 +151,6 @@ void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_
     const std::uint32_t at = head + r;
     w.queued[w.queue[at >= n ? at - n : at]] = 0;
   }
-  const auto cities = w.tour.cities();
-  tour.assign(cities.begin(), cities.end());
-  std::swap(w.tour, w.previous);
 }
 
 }  // namespace antslam::tsp

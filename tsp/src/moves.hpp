@@ -7,11 +7,13 @@
 // and returns true; it returns false when t1 has no improving move.
 
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 
 #include "tsp/array_tour.hpp"
 #include "tsp/problem.hpp"
+#include "tsp/two_level_tour.hpp"
 
 namespace antslam::tsp::detail {
 
@@ -40,11 +42,40 @@ bool for_each_gainful_neighbour(const TspProblem& problem, std::uint32_t i, std:
   return false;
 }
 
-bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+/// Removes edges (p1, p2) and (q1, q2) and adds (p1, q1) and (p2, q2). Requires p2 and q2 to
+/// follow p1 and q1 in the same orientation (both succ or both pred).
+template <class Tour>
+void two_opt_move(Tour& tour, std::uint32_t p1, std::uint32_t p2, std::uint32_t q1,
+                  std::uint32_t q2) {
+  const bool forward = p2 == tour.succ(p1);
+  assert(p2 == tour.next(p1, forward) && q2 == tour.next(q1, forward));
+  static_cast<void>(q2);
+  if (forward) {
+    tour.reverse_path(p2, q1);
+  } else {
+    tour.reverse_path(q1, p2);
+  }
+}
+
+/// Moves city x between the adjacent cities a and b (neither is x): two 2-opt moves.
+template <class Tour>
+void move_city(Tour& tour, std::uint32_t x, std::uint32_t a, std::uint32_t b) {
+  const bool forward = b == tour.succ(a);  // orientation in which b follows a
+  const std::uint32_t p = tour.next(x, !forward);
+  const std::uint32_t q = tour.next(x, forward);
+  two_opt_move(tour, p, x, a, b);  // p a ... q x b
+  two_opt_move(tour, p, a, q, x);  // p q ... a x b
+}
+
+// The steps, for either tour representation (ArrayTour, TwoLevelTour).
+template <class Tour>
+bool two_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                   Touched& touched);
-bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+template <class Tour>
+bool two_half_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                        Touched& touched);
-bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+template <class Tour>
+bool three_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                     Touched& touched);
 
 }  // namespace antslam::tsp::detail

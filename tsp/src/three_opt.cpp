@@ -17,9 +17,10 @@ namespace antslam::tsp::detail {
 
 namespace {
 
+template <class Tour>
 struct Step {
   const TspProblem& problem;
-  ArrayTour& tour;
+  Tour& tour;
   std::size_t k;
   Touched& touched;
   std::uint32_t t1 = 0, t2 = 0, t3 = 0;
@@ -33,7 +34,7 @@ struct Step {
     const std::uint32_t t4 = tour.next(t3, !forward);
     const double g1_open = g1 + tour.next_length(t3, !forward);  // (t3, t4) removed, not closed
     if (g1_open - d(t1, t4) > 0.0) {
-      tour.two_opt_move(t1, t2, t4, t3);
+      two_opt_move(tour, t1, t2, t4, t3);
       touched.set({t1, t2, t3, t4});
       return true;
     }
@@ -45,8 +46,8 @@ struct Step {
       const std::uint32_t t6 = tour.next(t5, towards_t4);
       if (t6 == t4) return false;
       if (g2 + tour.next_length(t5, towards_t4) - d(t1, t6) <= 0.0) return false;
-      tour.two_opt_move(t1, t2, t4, t3);  // t1 t4 .. t2 t3 .. (closing edge (t1, t4) for now)
-      tour.two_opt_move(t4, t1, t5, t6);  // replaces (t1, t4), (t6, t5) by (t4, t5), (t1, t6)
+      two_opt_move(tour, t1, t2, t4, t3);  // t1 t4 .. t2 t3 .. (closing edge (t1, t4) for now)
+      two_opt_move(tour, t4, t1, t5, t6);  // replaces (t1, t4), (t6, t5) by (t4, t5), (t1, t6)
       touched.set({t1, t2, t3, t4, t5, t6});
       return true;
     });
@@ -61,17 +62,17 @@ struct Step {
       if (t5 == t3 || !tour.between(t2, t5, t3, forward)) return false;
       const std::uint32_t after = tour.next(t5, forward);
       if (g2 + tour.next_length(t5, forward) - d(t1, after) > 0.0) {  // t1 [t6..t3] [t2..t5] t4
-        tour.two_opt_move(t1, t2, t3, t4);                            // t1 t3..t6 t5..t2 t4
-        tour.two_opt_move(t1, t3, after, t5);                         // t1 t6..t3 t5..t2 t4
-        tour.two_opt_move(t3, t5, t2, t4);                            // t1 t6..t3 t2..t5 t4
+        two_opt_move(tour, t1, t2, t3, t4);                           // t1 t3..t6 t5..t2 t4
+        two_opt_move(tour, t1, t3, after, t5);                        // t1 t6..t3 t5..t2 t4
+        two_opt_move(tour, t3, t5, t2, t4);                           // t1 t6..t3 t2..t5 t4
         touched.set({t1, t2, t3, t4, t5, after});
         return true;
       }
       if (t5 == t2) return false;
       const std::uint32_t before = tour.next(t5, !forward);
       if (g2 + tour.next_length(t5, !forward) - d(t1, before) > 0.0) {  // t1 [t6..t2] [t3..t5] t4
-        tour.two_opt_move(t1, t2, before, t5);                          // t1 t6..t2 t5..t3 t4
-        tour.two_opt_move(t2, t5, t3, t4);                              // t1 t6..t2 t3..t5 t4
+        two_opt_move(tour, t1, t2, before, t5);                         // t1 t6..t2 t5..t3 t4
+        two_opt_move(tour, t2, t5, t3, t4);                             // t1 t6..t2 t3..t5 t4
         touched.set({t1, t2, t3, t4, t5, before});
         return true;
       }
@@ -82,9 +83,10 @@ struct Step {
 
 }  // namespace
 
-bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+template <class Tour>
+bool three_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                     Touched& touched) {
-  Step step{problem, tour, k, touched};
+  Step<Tour> step{problem, tour, k, touched};
   step.t1 = t1;
   for (const bool forward : {true, false}) {
     step.forward = forward;
@@ -101,5 +103,9 @@ bool three_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1
   }
   return false;
 }
+
+template bool three_opt_step(const TspProblem&, ArrayTour&, std::uint32_t, std::size_t, Touched&);
+template bool three_opt_step(const TspProblem&, TwoLevelTour&, std::uint32_t, std::size_t,
+                             Touched&);
 
 }  // namespace antslam::tsp::detail

@@ -8,19 +8,21 @@ namespace {
 
 /// The 2-opt closing of remove (t1, t2), add (t2, t3): remove (t4, t3) with t4 the
 /// predecessor of t3, add (t4, t1). Applies it if it gains.
-bool try_two_opt(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::uint32_t t2,
+template <class Tour>
+bool try_two_opt(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::uint32_t t2,
                  std::uint32_t t3, double g1, bool forward, Touched& touched) {
   const std::uint32_t t4 = tour.next(t3, !forward);
   if (t4 == t2) return false;  // t3 follows t2: nothing to exchange
   if (g1 + tour.next_length(t3, !forward) - problem.distance(t1, t4) <= 0.0) return false;
-  tour.two_opt_move(t1, t2, t4, t3);
+  two_opt_move(tour, t1, t2, t4, t3);
   touched.set({t1, t2, t3, t4});
   return true;
 }
 
 }  // namespace
 
-bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+template <class Tour>
+bool two_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                   Touched& touched) {
   for (const bool forward : {true, false}) {
     const std::uint32_t t2 = tour.next(t1, forward);
@@ -33,7 +35,8 @@ bool two_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, 
   return false;
 }
 
-bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t t1, std::size_t k,
+template <class Tour>
+bool two_half_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                        Touched& touched) {
   for (const bool forward : {true, false}) {
     const std::uint32_t t2 = tour.next(t1, forward);
@@ -51,7 +54,7 @@ bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t
         if (u == t2) continue;
         const double insertion = d23 + problem.distance(t2, u) - tour.next_length(t3, side);
         if (removal - insertion <= 0.0) continue;
-        tour.move_city(t2, t3, u);
+        move_city(tour, t2, t3, u);
         touched.set({t1, t2, t2_next, t3, u});
         return true;
       }
@@ -61,5 +64,12 @@ bool two_half_opt_step(const TspProblem& problem, ArrayTour& tour, std::uint32_t
   }
   return false;
 }
+
+template bool two_opt_step(const TspProblem&, ArrayTour&, std::uint32_t, std::size_t, Touched&);
+template bool two_opt_step(const TspProblem&, TwoLevelTour&, std::uint32_t, std::size_t, Touched&);
+template bool two_half_opt_step(const TspProblem&, ArrayTour&, std::uint32_t, std::size_t,
+                                Touched&);
+template bool two_half_opt_step(const TspProblem&, TwoLevelTour&, std::uint32_t, std::size_t,
+                                Touched&);
 
 }  // namespace antslam::tsp::detail

@@ -1,11 +1,10 @@
 #pragma once
 // Array representation of a tour with a position index, as in ACOTSP's local searches:
 // succ/pred/between in O(1), and a 2-opt move as the reversal of the shorter of the two paths
-// it could reverse (at most n/2 swaps). The length of every tour edge is kept beside it, so
-// that the local search reads tour-edge lengths from a small hot array instead of the distance
-// matrix (or a square root).
+// it could reverse (at most n/2 swaps; TwoLevelTour does it in O(sqrt n)). The length of every tour
+// edge is kept beside it, so that the local search reads tour-edge lengths from a small hot array
+// instead of the distance matrix (or a square root).
 
-#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -28,6 +27,7 @@ class ArrayTour {
     for (std::uint32_t p = 0; p < n_; ++p) length_[p] = edge_at(p);
   }
   std::span<const std::uint32_t> cities() const { return city_; }
+  void copy_to(std::vector<std::uint32_t>& out) const { out.assign(city_.begin(), city_.end()); }
   std::uint32_t size() const { return n_; }
   std::uint32_t position(std::uint32_t c) const { return position_[c]; }
 
@@ -46,28 +46,6 @@ class ArrayTour {
     if (!forward) std::swap(a, c);
     const std::uint32_t pa = position_[a];
     return distance_forward(pa, position_[b]) <= distance_forward(pa, position_[c]);
-  }
-
-  /// Removes edges (p1, p2) and (q1, q2) and adds (p1, q1) and (p2, q2). Requires p2 and q2 to
-  /// follow p1 and q1 in the same orientation (both succ or both pred).
-  void two_opt_move(std::uint32_t p1, std::uint32_t p2, std::uint32_t q1, std::uint32_t q2) {
-    const bool forward = p2 == succ(p1);
-    assert(p2 == next(p1, forward) && q2 == next(q1, forward));
-    static_cast<void>(q2);
-    if (forward) {
-      reverse_path(p2, q1);
-    } else {
-      reverse_path(q1, p2);
-    }
-  }
-
-  /// Moves city x between the adjacent cities a and b (neither is x): two 2-opt moves.
-  void move_city(std::uint32_t x, std::uint32_t a, std::uint32_t b) {
-    const bool forward = b == succ(a);  // orientation in which b follows a
-    const std::uint32_t p = next(x, !forward);
-    const std::uint32_t q = next(x, forward);
-    two_opt_move(p, x, a, b);  // p a ... q x b
-    two_opt_move(p, a, q, x);  // p q ... a x b
   }
 
   /// Reverses the forward path from city a to city b (inclusive); the tour is the same cycle

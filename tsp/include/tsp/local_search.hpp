@@ -8,9 +8,10 @@
 //           by a sequential exchange, including the pure segment moves of Or-opt
 //
 // All three use nearest-neighbour lists (a new edge joins a city to one of its `neighbours`
-// nearest), the gain criterion (each partial exchange must gain), first improvement, an array
-// tour with a position index (moves are reversals of the shorter side), and don't-look bits as
-// a queue of the cities whose tour edges changed (Bentley 1992). Every move strictly shortens
+// nearest), the gain criterion (each partial exchange must gain), first improvement, moves as
+// reversals of the shorter side of the tour (an array tour with a position index, O(n) a move;
+// from `two_level_from` cities a two-level tour, O(sqrt n) a move), and don't-look bits as a
+// queue of the cities whose tour edges changed (Bentley 1992). Every move strictly shortens
 // the tour, so the tour never gets longer. The stop token is polled every 64 queue steps.
 //
 // queue_changed_only: a workspace remembers the tour it returned last (the same ant slot's
@@ -28,6 +29,7 @@
 #include "aco/termination.hpp"
 #include "tsp/array_tour.hpp"
 #include "tsp/problem.hpp"
+#include "tsp/two_level_tour.hpp"
 
 namespace antslam::tsp {
 
@@ -41,6 +43,7 @@ struct LocalSearchSettings {
   LocalSearchKind kind = LocalSearchKind::three_opt;  ///< neighbourhood; none leaves tours as built
   std::size_t neighbours = 10;     ///< nearest neighbours tried per city (count; capped by lists)
   bool queue_changed_only = true;  ///< start from cities with an edge not in the last result
+  std::size_t two_level_from = 30'000;  ///< cities from which moves run on a TwoLevelTour
 };
 
 /// What one improve() call did (for tests and benchmarks).
@@ -54,8 +57,10 @@ class TourLocalSearch {
  public:
   /// One per ant, a cache line of its own (ants on different threads update theirs constantly).
   struct alignas(64) Workspace {
-    ArrayTour tour;
-    ArrayTour previous;                // the last local optimum returned (empty at first)
+    ArrayTour tour;                       // the tour while moves run, below two_level_from cities
+    TwoLevelTour large;                   // the tour while moves run, from two_level_from cities
+    std::vector<std::uint32_t> previous;  // the last tour returned (empty at first)
+    std::vector<std::uint32_t> previous_position;  // city -> its place in `previous`
     std::vector<std::uint32_t> queue;  // circular FIFO of cities whose don't-look bit is off
     std::vector<std::uint8_t> queued;
     LocalSearchStats stats;  // of the last improve() call
@@ -81,12 +86,16 @@ class TourLocalSearch {
                std::span<const std::uint32_t> new_edges) const;
 
  private:
-  /// Resets the stats and loads `tour`; false when there is nothing to search.
+  /// Resets the stats; false when there is nothing to search.
   bool begin(const TspProblem& problem, const std::vector<std::uint32_t>& tour,
              Workspace& workspace) const;
-  /// Runs the don't-look-bit queue (its first `count` entries active) and writes the result.
+  /// Loads `tour`, runs the don't-look-bit queue (its first `count` entries active) on the
+  /// representation for its size and writes the result back.
   void search(const TspProblem& problem, std::vector<std::uint32_t>& tour, Workspace& workspace,
               std::uint32_t count, const aco::StopToken& stop) const;
+  template <class Tour>
+  void run_queue(const TspProblem& problem, Tour& moves_on, Workspace& workspace,
+                 std::uint32_t count, const aco::StopToken& stop) const;
 
   LocalSearchSettings settings_;
 };
