@@ -320,12 +320,7 @@ TEST(ArrayTour, ReversalsKeepPositionsAndEdgeLengthsConsistent) {
     for (int step = 0; step < 500; ++step) {
       const auto a = rng.below(static_cast<std::uint32_t>(n));
       const auto b = rng.below(static_cast<std::uint32_t>(n));
-      std::vector<std::uint32_t> expected;  // the cycle with the path a..b reversed
-      const auto cities = tour.cities();
-      const std::size_t pa = tour.position(a), pb = tour.position(b);
-      const std::size_t len = (pb + n - pa) % n + 1;
-      for (std::size_t s = 0; s < len; ++s) expected.push_back(cities[(pb + n - s) % n]);
-      for (std::size_t s = len; s < n; ++s) expected.push_back(cities[(pa + s) % n]);
+      const std::vector<std::uint32_t> expected = testing::reversed_path(tour.cities(), a, b);
       tour.reverse_path(a, b);
       // Same cycle as `expected`, in either orientation, from any start.
       const std::uint32_t first = expected[0];

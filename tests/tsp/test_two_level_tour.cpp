@@ -12,20 +12,6 @@
 namespace antslam::tsp {
 namespace {
 
-/// The cycle `tour` with its forward path from a to b reversed (a brute-force reference).
-std::vector<std::uint32_t> reversed_path(const std::vector<std::uint32_t>& tour, std::uint32_t a,
-                                         std::uint32_t b) {
-  const std::size_t n = tour.size();
-  const auto at = [&](std::uint32_t c) {
-    return static_cast<std::size_t>(std::find(tour.begin(), tour.end(), c) - tour.begin());
-  };
-  const std::size_t pa = at(a), pb = at(b), length = (pb + n - pa) % n + 1;
-  std::vector<std::uint32_t> out;
-  for (std::size_t s = 0; s < length; ++s) out.push_back(tour[(pb + n - s) % n]);
-  for (std::size_t s = length; s < n; ++s) out.push_back(tour[(pa + s) % n]);
-  return out;
-}
-
 /// b on the path from a to c along `cycle` (forward) or against it.
 bool between_in(const std::vector<std::uint32_t>& cycle, std::uint32_t a, std::uint32_t b,
                 std::uint32_t c, bool forward) {
@@ -81,7 +67,8 @@ TEST(TwoLevelTour, ReversalsGiveTheCycleOfBruteForce) {
       }
       // The tour's forward path a..b is, against the reference's orientation, its path b..a.
       const bool same = tour.succ(expected[0]) == expected[1];
-      expected = same ? reversed_path(expected, a, b) : reversed_path(expected, b, a);
+      expected =
+          same ? testing::reversed_path(expected, a, b) : testing::reversed_path(expected, b, a);
       tour.reverse_path(a, b);
       ASSERT_LE(tour.segment_count(), 2 * after_cut);
       ASSERT_NO_FATAL_FAILURE(expect_holds(tour, expected, rng));

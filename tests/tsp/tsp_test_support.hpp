@@ -73,4 +73,19 @@ inline std::vector<std::uint32_t> random_tour(std::size_t n, aco::Rng& rng) {
   return tour;
 }
 
+/// The cycle `tour` with its forward path from a to b reversed (a brute-force reference for
+/// the tour representations).
+inline std::vector<std::uint32_t> reversed_path(std::span<const std::uint32_t> tour,
+                                                std::uint32_t a, std::uint32_t b) {
+  const std::size_t n = tour.size();
+  const auto at = [&](std::uint32_t c) {
+    return static_cast<std::size_t>(std::find(tour.begin(), tour.end(), c) - tour.begin());
+  };
+  const std::size_t pa = at(a), pb = at(b), length = (pb + n - pa) % n + 1;
+  std::vector<std::uint32_t> out;
+  for (std::size_t s = 0; s < length; ++s) out.push_back(tour[(pb + n - s) % n]);
+  for (std::size_t s = length; s < n; ++s) out.push_back(tour[(pa + s) % n]);
+  return out;
+}
+
 }  // namespace antslam::tsp::testing

@@ -107,7 +107,7 @@ void TourLocalSearch::search(const TspProblem& problem, std::vector<std::uint32_
     run_queue(problem, w.tour, w, count, stop);
     w.tour.copy_to(tour);
   }
-  w.previous.assign(tour.begin(), tour.end());
+  if (settings_.queue_changed_only) w.previous.assign(tour.begin(), tour.end());
 }
 
 template <class Tour>

@@ -59,7 +59,7 @@ class TourLocalSearch {
   struct alignas(64) Workspace {
     ArrayTour tour;                       // the tour while moves run, below two_level_from cities
     TwoLevelTour large;                   // the tour while moves run, from two_level_from cities
-    std::vector<std::uint32_t> previous;  // the last tour returned (empty at first)
+    std::vector<std::uint32_t> previous;  // the last tour returned, with queue_changed_only
     std::vector<std::uint32_t> previous_position;  // city -> its place in `previous`
     std::vector<std::uint32_t> queue;  // circular FIFO of cities whose don't-look bit is off
     std::vector<std::uint8_t> queued;
