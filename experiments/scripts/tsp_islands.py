@@ -6,9 +6,9 @@ their best tours every 25 iterations along a ring) and, right after it, two plai
 (colony 0: s, colony 1: aco::colony_seed(s, 1)), so that each pair differs only in the
 exchange; the better of the two plain runs is "independent". Every run uses the TSP defaults
 (MAX-MIN Ant System, 25 ants, rho 0.2, 3-opt local search) but builds its tours from nothing
-(--focused-edges 0), as when docs/mpi-islands.md was measured. Writes
-tsp-islands.csv (every run), table.md (mean excess over the optimum per instance, wins, the
-share of the island runs' time spent in the exchange) and tsp-islands.png into the results
+(--focused-edges 0) with 10 local-search neighbours, as when docs/mpi-islands.md was measured.
+Writes tsp-islands.csv (every run), table.md (mean excess over the optimum per instance, wins,
+the share of the island runs' time spent in the exchange) and tsp-islands.png into the results
 folder. pr2392 (data/tsplib) at 30 s with 5 seeds, d15112 (../shared/data/tsplib, when it is
 there) at 120 s with 3 seeds: about 20 minutes; run it on an otherwise idle machine with two
 cores free.
@@ -67,7 +67,7 @@ def mpi_environment():
 
 def tsp_command(args, path, seed, budget, json_path, *extra):
     return [args.antslam, "tsp", "-i", path, "--seed", str(seed), *budget, "--json", json_path,
-            "--focused-edges", "0", "--quiet", *map(str, extra)]
+            "--focused-edges", "0", "--neighbours", "10", "--quiet", *map(str, extra)]
 
 
 def island_run(args, path, seed, budget, json_path, *extra):

@@ -51,7 +51,7 @@ _PROBLEM = {"candidates": "candidates", "matrix_limit": "matrix_limit"}
 
 
 def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3opt",
-          neighbours=10, time_limit=0.0, cpu_time_limit=0.0, target=None, stagnation=0,
+          neighbours=20, time_limit=0.0, cpu_time_limit=0.0, target=None, stagnation=0,
           observer=None, colonies=1, exchange_every=25, topology="ring", **options):
     """Solves the instance with an ACO variant (as, eas, ras, acs, mmas, hybrid).
 

@@ -62,31 +62,53 @@ TEST(NeighbourLists, AreSortedAndExcludeTheCity) {
   EXPECT_THROW(nearest_neighbours(instance, 0, nullptr), std::invalid_argument);
 }
 
+/// Removes the cities of random tours from `search`, asking for the nearest unvisited city to
+/// a visited one after every `spacing`-th removal, and compares each answer with brute force.
+/// Several rounds, so reset() must restore whatever the queries of the last round changed.
+void expect_agrees_with_brute_force(const Instance& instance, NearestUnvisited& search,
+                                    std::size_t spacing) {
+  aco::Rng rng(9);
+  for (int round = 0; round < 3; ++round) {
+    search.reset();
+    std::vector<bool> visited(instance.size(), false);
+    const auto order = testing::random_tour(instance.size(), rng);
+    for (std::size_t step = 0; step + 1 < order.size(); ++step) {
+      search.remove(order[step]);
+      visited[order[step]] = true;
+      if (step % spacing != 0) continue;
+      const std::uint32_t from = order[rng.below(static_cast<std::uint32_t>(step + 1))];
+      std::uint32_t expected = 0;
+      double best = INFINITY;
+      for (std::uint32_t j = 0; j < instance.size(); ++j)
+        if (!visited[j] && instance.distance(from, j) < best) {
+          best = instance.distance(from, j);
+          expected = j;
+        }
+      ASSERT_EQ(search.nearest(from), expected) << "round " << round << ", step " << step;
+    }
+    EXPECT_EQ(search.remaining(), 1U);
+  }
+}
+
 TEST(NearestUnvisited, AgreesWithAScanWhileCitiesAreRemoved) {
   for (const Instance& instance : grid_cases()) {
     SCOPED_TRACE(instance.name());
     const SpatialGrid grid(instance.coords());
     NearestUnvisited search(&instance, &grid);
-    aco::Rng rng(9);
-    for (int round = 0; round < 2; ++round) {
-      search.reset();
-      std::vector<bool> visited(instance.size(), false);
-      const auto order = testing::random_tour(instance.size(), rng);
-      for (std::size_t step = 0; step + 1 < order.size(); ++step) {
-        search.remove(order[step]);
-        visited[order[step]] = true;
-        const std::uint32_t from = order[rng.below(static_cast<std::uint32_t>(step + 1))];
-        std::uint32_t expected = 0;
-        double best = INFINITY;
-        for (std::uint32_t j = 0; j < instance.size(); ++j)
-          if (!visited[j] && instance.distance(from, j) < best) {
-            best = instance.distance(from, j);
-            expected = j;
-          }
-        ASSERT_EQ(search.nearest(from), expected) << "step " << step;
+    expect_agrees_with_brute_force(instance, search, 1);
+  }
+}
+
+// A focused ant asks rarely, so many visited cities wait in the lists between two queries.
+TEST(NearestUnvisited, AgreesWithAScanWhenQueriesAreRare) {
+  for (const Instance& instance : grid_cases()) {
+    SCOPED_TRACE(instance.name());
+    const SpatialGrid grid(instance.coords());
+    for (const SpatialGrid* g : {&grid, static_cast<const SpatialGrid*>(nullptr)})
+      for (std::size_t spacing : {std::size_t{7}, std::size_t{61}}) {
+        NearestUnvisited search(&instance, g);
+        expect_agrees_with_brute_force(instance, search, spacing);
       }
-      EXPECT_EQ(search.remaining(), 1U);
-    }
   }
 }
 

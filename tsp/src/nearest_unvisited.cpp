@@ -13,55 +13,61 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 NearestUnvisited::NearestUnvisited(const Instance* instance, const SpatialGrid* grid)
     : instance_(instance), grid_(grid) {
   const std::size_t n = instance_->size();
-  unvisited_.resize(n);
-  slot_.resize(n);
+  visited_.resize(n);
+  listed_.resize(n);
+  std::iota(listed_.begin(), listed_.end(), 0U);
+  listed_count_ = static_cast<std::uint32_t>(n);
   if (grid_ != nullptr) {
-    cell_nodes_.resize(n);
-    cell_slot_.resize(n);
+    const auto nodes = grid_->nodes();
+    cell_nodes_.assign(nodes.begin(), nodes.end());
     live_.resize(grid_->cell_count());
+    for (std::size_t c = 0; c < live_.size(); ++c) live_[c] = grid_->start(c + 1) - grid_->start(c);
   }
   reset();
 }
 
 void NearestUnvisited::reset() {
-  std::iota(unvisited_.begin(), unvisited_.end(), 0U);
-  std::iota(slot_.begin(), slot_.end(), 0U);
-  remaining_ = static_cast<std::uint32_t>(unvisited_.size());
+  std::fill(visited_.begin(), visited_.end(), 0);
+  remaining_ = static_cast<std::uint32_t>(visited_.size());
+  if (listed_count_ != listed_.size()) {
+    std::iota(listed_.begin(), listed_.end(), 0U);
+    listed_count_ = static_cast<std::uint32_t>(listed_.size());
+  }
   if (grid_ == nullptr) return;
   const auto nodes = grid_->nodes();
-  std::copy(nodes.begin(), nodes.end(), cell_nodes_.begin());
-  for (std::uint32_t s = 0; s < nodes.size(); ++s) cell_slot_[nodes[s]] = s;
-  for (std::size_t c = 0; c < live_.size(); ++c) live_[c] = grid_->start(c + 1) - grid_->start(c);
+  for (const std::size_t cell : changed_cells_) {
+    const std::uint32_t begin = grid_->start(cell), end = grid_->start(cell + 1);
+    std::copy(nodes.begin() + begin, nodes.begin() + end, cell_nodes_.begin() + begin);
+    live_[cell] = end - begin;
+  }
+  changed_cells_.clear();
 }
 
 void NearestUnvisited::remove(std::uint32_t node) {
-  const std::uint32_t last = unvisited_[--remaining_];
-  unvisited_[slot_[node]] = last;
-  slot_[last] = slot_[node];
-  if (grid_ == nullptr) return;
-  const std::size_t cell = grid_->cell_index(grid_->column_of(node), grid_->row_of(node));
-  const std::uint32_t end = grid_->start(cell) + --live_[cell];
-  const std::uint32_t moved = cell_nodes_[end];
-  std::swap(cell_nodes_[cell_slot_[node]], cell_nodes_[end]);
-  cell_slot_[moved] = cell_slot_[node];
-  cell_slot_[node] = end;
+  visited_[node] = 1;
+  --remaining_;
 }
 
-std::uint32_t NearestUnvisited::scan(std::uint32_t from) const {
+std::uint32_t NearestUnvisited::scan(std::uint32_t from) {
   std::uint32_t best = kNone;
   double best_d = std::numeric_limits<double>::infinity();
-  for (std::uint32_t r = 0; r < remaining_; ++r) {
-    const std::uint32_t j = unvisited_[r];
+  for (std::uint32_t r = 0; r < listed_count_;) {
+    const std::uint32_t j = listed_[r];
+    if (visited_[j] != 0) {
+      listed_[r] = listed_[--listed_count_];
+      continue;
+    }
     const double d = instance_->distance(from, j);
     if (d < best_d || (d == best_d && j < best)) {
       best_d = d;
       best = j;
     }
+    ++r;
   }
   return best;
 }
 
-std::uint32_t NearestUnvisited::nearest(std::uint32_t from) const {
+std::uint32_t NearestUnvisited::nearest(std::uint32_t from) {
   if (grid_ == nullptr) return scan(from);
   const int column = grid_->column_of(from), row = grid_->row_of(from);
   const double margin = 1e-9 * grid_->cell_size();
@@ -72,14 +78,26 @@ std::uint32_t NearestUnvisited::nearest(std::uint32_t from) const {
     if (side * side > remaining_) return scan(from);  // fewer cities left than cells to visit
     grid_->for_each_cell_in_ring(column, row, r, [&](std::size_t cell) {
       const std::uint32_t begin = grid_->start(cell);
-      for (std::uint32_t s = begin; s < begin + live_[cell]; ++s) {
-        const std::uint32_t j = cell_nodes_[s];
+      std::uint32_t* nodes = cell_nodes_.data() + begin;
+      const std::uint32_t listed = live_[cell];
+      std::uint32_t live = listed;
+      for (std::uint32_t s = 0; s < live;) {
+        const std::uint32_t j = nodes[s];
+        if (visited_[j] != 0) {
+          nodes[s] = nodes[--live];  // drop the visited city; reset() restores the cell
+          continue;
+        }
         const double d = instance_->distance(from, j);
         if (d < best_d || (d == best_d && j < best)) {
           best_d = d;
           best = j;
         }
+        ++s;
       }
+      if (live == listed) return;
+      if (listed == grid_->start(cell + 1) - begin)
+        changed_cells_.push_back(static_cast<std::uint32_t>(cell));
+      live_[cell] = live;
     });
     if (grid_->ring_covers_grid(column, row, r)) return best;
     const double reach = std::max(0.0, static_cast<double>(r) * grid_->cell_size() - margin);

@@ -326,7 +326,7 @@ class PermutationFamily {
   }
 
   /// Fallback when every candidate is visited: the nearest unvisited node (lowest id on ties).
-  std::uint32_t nearest_unvisited(const Scratch& s, std::uint32_t current) const {
+  std::uint32_t nearest_unvisited(Scratch& s, std::uint32_t current) const {
     if constexpr (kHasNearestSearch) {
       return s.search.nearest(current);
     } else {

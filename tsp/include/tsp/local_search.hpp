@@ -41,7 +41,7 @@ std::optional<LocalSearchKind> parse_local_search(std::string_view name);
 
 struct LocalSearchSettings {
   LocalSearchKind kind = LocalSearchKind::three_opt;  ///< neighbourhood; none leaves tours as built
-  std::size_t neighbours = 10;     ///< nearest neighbours tried per city (count; capped by lists)
+  std::size_t neighbours = 20;     ///< nearest neighbours tried per city (count; capped by lists)
   bool queue_changed_only = true;  ///< start from cities with an edge not in the last result
   std::size_t two_level_from = 30'000;  ///< cities from which moves run on a TwoLevelTour
 };

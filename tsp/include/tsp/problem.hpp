@@ -21,7 +21,7 @@ namespace antslam::tsp {
 
 struct ProblemSettings {
   std::size_t candidates = 20;      ///< nearest neighbours an ant chooses among (ACOTSP nn_ants)
-  std::size_t ls_neighbours = 10;   ///< nearest neighbours local search tries (ACOTSP: 20)
+  std::size_t ls_neighbours = 20;   ///< nearest neighbours local search tries (as ACOTSP)
   std::size_t matrix_limit = 2000;  ///< cities up to which the full distance matrix is stored
 };
 
