@@ -13,6 +13,10 @@ cd "$(dirname "$0")/.."
 
 build_dir=build
 cmake_args=(-DCMAKE_BUILD_TYPE=Release)
+# Sanitizer and fuzzing trees: clang, optimised, with line tables instead of full debug
+# information (cmake/AntslamSanitizers.cmake).
+sanitizer_build=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo
+                 "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -DNDEBUG")
 targets=()
 ctest_args=()
 case "${1:-}" in
@@ -20,13 +24,13 @@ case "${1:-}" in
     build_dir=build-asan
     # No Python module: an AddressSanitizer extension loads only into a Python with libasan
     # preloaded, and CPython's own allocations then report leaks (docs/python.md).
-    cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTSLAM_SANITIZE=address,undefined
+    cmake_args=("${sanitizer_build[@]}" -DANTSLAM_SANITIZE=address,undefined
                 -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_PYTHON=OFF)
     ;;
   --thread)
     build_dir=build-tsan
-    cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DANTSLAM_SANITIZE=thread
-                -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_PYTHON=OFF -DCMAKE_CXX_COMPILER=clang++)
+    cmake_args=("${sanitizer_build[@]}" -DANTSLAM_SANITIZE=thread
+                -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_PYTHON=OFF)
     targets=(--target test_aco test_tsp test_slamgraph test_mapping test_contract)
     ctest_args=(-L parallel)
     # Archer (LLVM OpenMP's ThreadSanitizer tool) makes OpenMP's own synchronisation visible.
@@ -37,9 +41,8 @@ case "${1:-}" in
     ;;
   --fuzz)
     build_dir=build-fuzz
-    cmake_args=(-DCMAKE_BUILD_TYPE=Release -DANTSLAM_BUILD_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++
-                -DANTSLAM_BUILD_TESTS=OFF -DANTSLAM_BUILD_BENCH=OFF
-                -DANTSLAM_BUILD_EXPERIMENTS=OFF -DANTSLAM_BUILD_PYTHON=OFF)
+    cmake_args=("${sanitizer_build[@]}" -DANTSLAM_BUILD_FUZZ=ON -DANTSLAM_BUILD_TESTS=OFF
+                -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_EXPERIMENTS=OFF -DANTSLAM_BUILD_PYTHON=OFF)
     targets=(--target fuzzers)
     ;;
   "") ;;

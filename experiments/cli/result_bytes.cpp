@@ -5,18 +5,39 @@
 
 namespace antslam::cli {
 
-// Sent as their bytes (dist/byte_stream.hpp): all ranks of a run share one architecture.
-static_assert(std::is_trivially_copyable_v<slam::Scores>);
-static_assert(std::is_trivially_copyable_v<slam::Pose2>);
-static_assert(std::is_trivially_copyable_v<slam::ConvergencePoint>);
-static_assert(std::is_trivially_copyable_v<std::optional<aco::RunSettings>>);
-static_assert(std::is_trivially_copyable_v<std::optional<double>>);
+// Sent as their bytes (dist/byte_stream.hpp): all ranks of a run share one architecture, and
+// these types have no padding, whose bytes would be unset (so equal results could differ).
+static_assert(sizeof(slam::Scores) == 2 * sizeof(double));
+static_assert(sizeof(slam::Pose2) == 3 * sizeof(double));
+static_assert(sizeof(slam::ConvergencePoint) == 4 * sizeof(double));
+static_assert(sizeof(aco::ColonySettings) == 7 * sizeof(double));
 
 namespace {
 
 template <class T>
 void write_values(dist::ByteWriter& out, const std::vector<T>& vs) {
   out.values(std::span<const T>(vs));
+}
+
+// Field by field: a bool and an optional leave padding between the fields.
+void write_settings(dist::ByteWriter& out, const aco::RunSettings& s) {
+  out.optional(s.variant);
+  out.value(s.rho);
+  out.value(s.colony);
+  out.value(static_cast<std::uint8_t>(s.local_search));
+  out.value(s.backend);
+  out.value(s.threads);
+}
+
+aco::RunSettings read_settings(dist::ByteReader& in) {
+  aco::RunSettings s;
+  s.variant = in.optional<aco::Variant>();
+  s.rho = in.value<double>();
+  s.colony = in.value<aco::ColonySettings>();
+  s.local_search = in.value<std::uint8_t>() != 0;
+  s.backend = in.value<aco::BackendKind>();
+  s.threads = in.value<std::size_t>();
+  return s;
 }
 
 }  // namespace
@@ -32,7 +53,8 @@ void write(dist::ByteWriter& out, const slam::OptimizeResult& r) {
   out.value(r.elapsed_s);
   out.value(r.time_to_best_s);
   write_values(out, r.convergence);
-  out.value(r.colony);
+  out.value(static_cast<std::uint8_t>(r.colony.has_value()));
+  if (r.colony) write_settings(out, *r.colony);
 }
 
 slam::OptimizeResult read_optimize_result(dist::ByteReader& in) {
@@ -47,7 +69,7 @@ slam::OptimizeResult read_optimize_result(dist::ByteReader& in) {
   r.elapsed_s = in.value<double>();
   r.time_to_best_s = in.value<double>();
   r.convergence = in.values<slam::ConvergencePoint>();
-  r.colony = in.value<std::optional<aco::RunSettings>>();
+  if (in.value<std::uint8_t>() != 0) r.colony = read_settings(in);
   return r;
 }
 
@@ -58,7 +80,7 @@ void write(dist::ByteWriter& out, const tsp::ExperimentRun& r) {
   out.value(r.threads);
   out.value(r.seed);
   out.value(r.length);
-  out.value(r.optimum);
+  out.optional(r.optimum);
   write_values(out, r.result.best.path);
   out.value(r.result.best.cost);
   out.value(r.result.iterations);
@@ -66,7 +88,7 @@ void write(dist::ByteWriter& out, const tsp::ExperimentRun& r) {
   out.value(r.result.elapsed_s);
   out.value(r.result.time_to_best_s);
   out.value(r.result.reason);
-  out.value(r.result.settings);
+  write_settings(out, r.result.settings);
 }
 
 tsp::ExperimentRun read_experiment_run(dist::ByteReader& in) {
@@ -77,7 +99,7 @@ tsp::ExperimentRun read_experiment_run(dist::ByteReader& in) {
   r.threads = in.value<std::size_t>();
   r.seed = in.value<std::uint64_t>();
   r.length = in.value<double>();
-  r.optimum = in.value<std::optional<double>>();
+  r.optimum = in.optional<double>();
   r.result.best.path = in.values<std::uint32_t>();
   r.result.best.cost = in.value<double>();
   r.result.iterations = in.value<std::uint64_t>();
@@ -85,7 +107,7 @@ tsp::ExperimentRun read_experiment_run(dist::ByteReader& in) {
   r.result.elapsed_s = in.value<double>();
   r.result.time_to_best_s = in.value<double>();
   r.result.reason = in.value<aco::StopReason>();
-  r.result.settings = in.value<aco::RunSettings>();
+  r.result.settings = read_settings(in);
   return r;
 }
 

@@ -73,6 +73,19 @@ TEST(ResultBytes, TspRunsWriteTheSameFilesAfterTheTrip) {
   EXPECT_TRUE(back[1].optimum.has_value());  // eil51: 426 in optima.csv
 }
 
+TEST(ResultBytes, AnOptionalIsAPresenceByteAndThenItsValue) {
+  dist::ByteWriter out;
+  out.optional(std::optional<double>());
+  out.optional(std::optional<double>(2.5));
+  ASSERT_EQ(out.bytes().size(), 1U + 1U + sizeof(double));
+  EXPECT_EQ(out.bytes()[0], std::byte{0});
+  EXPECT_EQ(out.bytes()[1], std::byte{1});
+  dist::ByteReader in(out.bytes());
+  EXPECT_FALSE(in.optional<double>().has_value());
+  EXPECT_EQ(in.optional<double>(), 2.5);
+  EXPECT_EQ(in.remaining(), 0U);
+}
+
 TEST(ResultBytes, ATruncatedMessageIsRefused) {
   tsp::ExperimentRun r;
   r.instance = "eil51";

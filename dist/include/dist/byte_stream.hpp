@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,13 @@ class ByteWriter {
     bytes_.insert(bytes_.end(), first, first + vs.size_bytes());
   }
   void text(std::string_view s) { values(std::span<const char>(s.data(), s.size())); }
+  /// A presence byte, then the value if there is one: the bytes of a std::optional itself
+  /// include padding and, when empty, an unset value, so equal optionals could differ.
+  template <class T>
+  void optional(const std::optional<T>& v) {
+    value(static_cast<std::uint8_t>(v.has_value()));
+    if (v) value(*v);
+  }
 
   const std::vector<std::byte>& bytes() const { return bytes_; }
   std::vector<std::byte> take() { return std::move(bytes_); }
@@ -61,6 +69,11 @@ class ByteReader {
   std::string text() {
     const auto chars = values<char>();
     return {chars.begin(), chars.end()};
+  }
+  template <class T>
+  std::optional<T> optional() {
+    if (value<std::uint8_t>() == 0) return std::nullopt;
+    return value<T>();
   }
 
   std::size_t remaining() const { return bytes_.size() - position_; }
