@@ -11,13 +11,16 @@ function(antslam_set_warnings target)
 endfunction()
 
 # A compiled library of the project: public headers under include/, C++20, warnings, alias
-# antslam::<name>.
+# antslam::<name>. Compiled eight sources at a time (a unity build): each source parses the same
+# Eigen, Ceres and engine headers, and CI builds every library four times (Release, two
+# sanitizers, fuzzing) on two cores. So names local to a source must differ across the library.
 function(antslam_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(antslam_${name} ${ARG_SOURCES})
   add_library(antslam::${name} ALIAS antslam_${name})
   set_target_properties(antslam_${name} PROPERTIES EXPORT_NAME ${name}
-                                                   POSITION_INDEPENDENT_CODE ON)
+                                                   POSITION_INDEPENDENT_CODE ON UNITY_BUILD ON
+                                                   UNITY_BUILD_BATCH_SIZE 8)
   target_compile_features(antslam_${name} PUBLIC cxx_std_20)
   target_include_directories(
     antslam_${name} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>

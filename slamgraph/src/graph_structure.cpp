@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "slamgraph/chain.hpp"
+
 namespace antslam::slam {
 
 namespace {
@@ -35,8 +37,6 @@ struct Incidence {
 
 /// The vertex at the other end of edge e from v.
 std::size_t other_end(const PoseGraphEdge& e, std::size_t v) { return e.from == v ? e.to : e.from; }
-
-bool is_odometry(const PoseGraphEdge& e) { return e.from + 1 == e.to || e.to + 1 == e.from; }
 
 /// Breadth-first search over the edges from `roots`; returns which vertices it reached.
 std::vector<bool> reached_from(const PoseGraph& graph, std::span<const std::size_t> roots) {

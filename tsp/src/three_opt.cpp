@@ -15,10 +15,9 @@
 
 namespace antslam::tsp::detail {
 
-namespace {
-
+// Not in an anonymous namespace: the explicitly instantiated three_opt_step below captures it.
 template <class Tour>
-struct Step {
+struct ThreeOptSearch {
   const TspProblem& problem;
   Tour& tour;
   std::size_t k;
@@ -81,12 +80,10 @@ struct Step {
   }
 };
 
-}  // namespace
-
 template <class Tour>
 bool three_opt_step(const TspProblem& problem, Tour& tour, std::uint32_t t1, std::size_t k,
                     Touched& touched) {
-  Step<Tour> step{problem, tour, k, touched};
+  ThreeOptSearch<Tour> step{problem, tour, k, touched};
   step.t1 = t1;
   for (const bool forward : {true, false}) {
     step.forward = forward;

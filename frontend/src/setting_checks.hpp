@@ -1,0 +1,17 @@
+#pragma once
+// Checks of the settings that the scan matcher and the loop closer validate.
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace antslam::frontend {
+
+/// Throws std::invalid_argument("<who>: <field> <what>") unless ok.
+inline void require_setting(const char* who, bool ok, const char* field, const char* what) {
+  if (!ok) throw std::invalid_argument(std::string(who) + ": " + field + " " + what);
+}
+
+inline bool positive(double v) { return v > 0.0 && std::isfinite(v); }
+
+}  // namespace antslam::frontend
