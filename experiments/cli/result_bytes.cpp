@@ -53,8 +53,7 @@ void write(dist::ByteWriter& out, const slam::OptimizeResult& r) {
   out.value(r.elapsed_s);
   out.value(r.time_to_best_s);
   write_values(out, r.convergence);
-  out.value(static_cast<std::uint8_t>(r.colony.has_value()));
-  if (r.colony) write_settings(out, *r.colony);
+  out.optional(r.colony, write_settings);
 }
 
 slam::OptimizeResult read_optimize_result(dist::ByteReader& in) {

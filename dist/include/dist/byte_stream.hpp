@@ -35,8 +35,13 @@ class ByteWriter {
   /// include padding and, when empty, an unset value, so equal optionals could differ.
   template <class T>
   void optional(const std::optional<T>& v) {
+    optional(v, [](ByteWriter& out, const T& x) { out.value(x); });
+  }
+  /// The same, with `write(*this, value)` for a value that is not sent as its bytes.
+  template <class T, class Write>
+  void optional(const std::optional<T>& v, Write write) {
     value(static_cast<std::uint8_t>(v.has_value()));
-    if (v) value(*v);
+    if (v) write(*this, *v);
   }
 
   const std::vector<std::byte>& bytes() const { return bytes_; }
