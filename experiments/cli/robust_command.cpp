@@ -39,6 +39,7 @@ struct RobustOptions {
   std::string outliers;
   std::string variant = "mmas";
   std::string backend = "auto";
+  bool no_clique_check = false;
   slam::RobustSettings s;
 };
 
@@ -87,6 +88,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
        {{"inlier_confidence", o.s.inlier_confidence},
         {"cauchy_scale", o.s.cauchy_scale},
         {"dcs_phi", o.s.dcs_phi},
+        {"check_clique", o.s.check_clique},
         {"gnc_mu_factor", o.s.gnc.mu_factor},
         {"exact_time_limit_s", o.s.exact.time_limit_s},
         {"aco_variant", o.variant},
@@ -124,6 +126,7 @@ void run(RobustOptions o) {
   const slam::RobustMethod method = *slam::parse_robust_method(o.method);  // checked at parse
   o.s.aco.parameters.variant = *aco::parse_variant(o.variant);             // time, both
   o.s.backend = parse_backend_option(o.backend);
+  o.s.check_clique = !o.no_clique_check;
   aco::resolve(o.s.backend, o.s.threads);  // serial on more than one thread fails here, up front
   OutputFiles outputs;
   const std::filesystem::path graph_out = outputs.add(o.output + ".g2o");
@@ -214,6 +217,8 @@ void add_robust_command(CLI::App& app) {
                   "pcm-exact: branch-and-bound budget, s (0 = none)")
       ->check(finite_in(0.0, 1e9))
       ->capture_default_str();
+  cmd->add_flag("--no-clique-check", o->no_clique_check,
+                "pcm-*: accept the clique as it is, without its joint check (the published PCM)");
   cmd->add_option("--variant", o->variant, "pcm-aco: ACO variant")
       ->check(CLI::IsMember(aco::variant_names()))
       ->capture_default_str();

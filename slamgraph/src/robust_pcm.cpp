@@ -1,12 +1,14 @@
 // Pairwise consistent measurement set maximisation (Mangelson et al. 2018): the consistency graph
 // of the loop closures (consistency.hpp), its maximum clique by branch and bound or by the ants
-// (clique/), then least squares on the odometry and the clique's closures.
+// (clique/), then the joint check of the clique (robust.hpp, RobustSettings::check_clique) and
+// least squares on the odometry and the closures that pass it.
 
 #include <stdexcept>
 #include <string>
 
 #include "clique/graph.hpp"
 #include "robust_detail.hpp"
+#include "slamgraph/chi_square.hpp"
 #include "slamgraph/consistency.hpp"
 
 namespace antslam::slam {
@@ -38,6 +40,39 @@ CliqueReport maximum_consistent_set(const ConsistencyGraph& consistency, RobustM
 
 namespace antslam::slam::detail {
 
+namespace {
+
+/// The squared loss on the closures marked in `kept`; the others are left out.
+std::vector<EdgeLoss> keep_only(const std::vector<bool>& kept) {
+  std::vector<EdgeLoss> loss(kept.size());
+  for (std::size_t k = 0; k < kept.size(); ++k)
+    if (!kept[k]) loss[k] = {EdgeLoss::Kind::weighted, 0.0};
+  return loss;
+}
+
+/// The joint check of the clique: least squares on the clique (check_start_iterations
+/// iterations: a start, not a solution), DCS on the clique's closures from there, and a clique
+/// closure stays accepted when its residual passes the chi-square test. Pairwise tests over long
+/// odometry spans have little power, so a clique can hold false closures that agree with every
+/// other one pairwise but not with the map the others make together.
+void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial,
+                  const RobustSettings& settings, RobustResult& result) {
+  RobustSettings start = settings;
+  start.ceres.max_iterations = settings.check_start_iterations;
+  optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), start,
+           result);
+  std::vector<EdgeLoss> loss = keep_only(result.accepted);
+  for (std::size_t k = 0; k < loss.size(); ++k)
+    if (result.accepted[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
+  optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
+  const double c2 = chi_square3_quantile(settings.inlier_confidence);
+  const std::vector<double> chi2 = closure_chi2(graph, result.split, result.poses);
+  for (std::size_t k = 0; k < chi2.size(); ++k)
+    result.accepted[k] = result.accepted[k] && chi2[k] <= c2;
+}
+
+}  // namespace
+
 void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
              const RobustSettings& settings, RobustResult& result) {
   const std::size_t m = result.split.closures.size();
@@ -54,10 +89,10 @@ void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
     for (const std::uint32_t k : report.clique.vertices) result.accepted[k] = true;
     result.clique = report;
   }
-  std::vector<EdgeLoss> closure_loss(m);
-  for (std::size_t k = 0; k < m; ++k)
-    if (!result.accepted[k]) closure_loss[k] = {EdgeLoss::Kind::weighted, 0.0};
-  optimize(graph, initial, edge_losses(graph, result.split, closure_loss), settings, result);
+  const bool checked = settings.check_clique && m > 0;
+  if (checked) check_clique(graph, initial, settings, result);
+  optimize(graph, checked ? result.poses : initial,
+           edge_losses(graph, result.split, keep_only(result.accepted)), settings, result);
 }
 
 }  // namespace antslam::slam::detail

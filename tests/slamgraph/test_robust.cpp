@@ -96,6 +96,40 @@ TEST(Robust, PcmMethodsKeepTheTrueClosuresAndDropTheFalseOnes) {
   }
 }
 
+TEST(Robust, TheJointCheckDropsAFalseClosureThatEveryPairwiseTestPasses) {
+  // Three laps of a 10 m square whose measurements state twenty times their real deviation (as
+  // many public graphs overstate theirs), and one false closure "vertex 5 is where vertex 105 is"
+  // between two places 10 m apart, a lap and a half apart along the chain: over that span the
+  // stated odometry covariance is so wide that it passes the test against the odometry and against
+  // every true closure, so it is in the maximum clique; in the joint solution of all the
+  // closures its residual is far beyond the threshold, and the map is the outlier-free one.
+  testing::TrueGraph t = testing::square_laps(3, 10, 2, 2.0, 11, 0.05);
+  const std::size_t false_from = 5, false_to = 105;
+  ASSERT_NEAR((t.truth[false_from].translation() - t.truth[false_to].translation()).norm(), 10.0,
+              1e-9);
+  const std::vector<Pose2> outlier_free =
+      solve_robust(t.graph, RobustMethod::ls, {}, "outlier-free").poses;
+  t.graph.edges.push_back({false_from, false_to, Pose2{}, t.graph.edges.back().information});
+  const std::size_t closures = split_chain(t.graph, "t").closures.size();
+  std::vector<bool> outlier(closures, false);
+  outlier.back() = true;
+  for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
+    RobustSettings published;
+    published.check_clique = false;
+    const RobustResult unchecked = solve_robust(t.graph, method, published, "t");
+    EXPECT_TRUE(unchecked.accepted.back()) << to_string(method);
+    EXPECT_EQ(unchecked.clique->clique.vertices.size(), closures) << to_string(method);
+    EXPECT_GT(max_position_error(unchecked.poses, outlier_free), 1.0) << to_string(method);
+
+    const RobustResult checked = solve_robust(t.graph, method, {}, "t");
+    const AcceptanceScores sc = score_acceptance(checked.accepted, outlier);
+    EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method);
+    EXPECT_EQ(*sc.recall, 1.0) << to_string(method);
+    EXPECT_EQ(checked.clique->clique.vertices, unchecked.clique->clique.vertices);
+    EXPECT_LT(max_position_error(checked.poses, outlier_free), 1e-4) << to_string(method);
+  }
+}
+
 TEST(Robust, LeastSquaresBendsGncAndDcsRecover) {
   const Spoiled s = spoiled(OutlierKind::random, 5);
   const RobustResult ls = solve_robust(s.spoiled.graph, RobustMethod::ls, {}, "spoiled");
@@ -162,6 +196,9 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
   s = {};
   s.inlier_confidence = 1.0;
   EXPECT_THROW(solve_robust(t.graph, RobustMethod::ls, s, "t"), std::invalid_argument);
+  s = {};
+  s.check_start_iterations = 0;
+  EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
 }
 
 }  // namespace

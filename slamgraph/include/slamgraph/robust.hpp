@@ -9,12 +9,18 @@
 //              surrogate's parameter mu grows, from a convex start to the TLS cost, then least
 //              squares on the closures it kept;
 //   pcm-exact  the maximum clique of pairwise consistent closures (PCM, Mangelson et al. 2018)
-//              by branch and bound, then least squares on it;
-//   pcm-aco    the same clique found by the ants (Ant-Clique), then least squares on it.
+//              by branch and bound, then its joint check (below), then least squares on the
+//              closures that pass;
+//   pcm-aco    the same with the clique found by the ants (Ant-Clique).
+// The joint check (check_clique) solves DCS on the clique's closures, started from a few least-
+// squares iterations on them, and keeps the clique closures whose residual then passes the
+// chi-square test: the pairwise tests over long odometry spans have little power, and a clique
+// can hold false closures consistent with every other one pairwise but not with the map they
+// make together. Without it the PCM methods are the published PCM.
 // Odometry (edges between consecutive vertices) is always kept with the squared loss. A closure
 // counts as accepted by ls (every closure), by cauchy and dcs when its final residual passes the
 // chi-square test of `inlier_confidence`, by gnc when its final weight is above 1/2, and by the
-// PCM methods when it is in the clique.
+// PCM methods when it is in the clique (and passes the joint check).
 
 #include <array>
 #include <cstddef>
@@ -47,8 +53,9 @@ inline constexpr std::array<RobustMethodInfo, 6> kRobustMethods{{
     {RobustMethod::dcs, "dcs", "dynamic covariance scaling (Agarwal et al. 2013)"},
     {RobustMethod::gnc, "gnc",
      "graduated non-convexity, truncated least squares (Yang et al. 2020)"},
-    {RobustMethod::pcm_exact, "pcm-exact", "PCM maximum clique by branch and bound, then ls"},
-    {RobustMethod::pcm_aco, "pcm-aco", "PCM maximum clique by the ants, then ls"},
+    {RobustMethod::pcm_exact, "pcm-exact",
+     "PCM maximum clique by branch and bound, its joint check, then ls"},
+    {RobustMethod::pcm_aco, "pcm-aco", "PCM maximum clique by the ants, its joint check, then ls"},
 }};
 
 std::string_view to_string(RobustMethod method);
@@ -68,6 +75,8 @@ struct RobustSettings {
                                     ///< GNC truncation c^2 and the acceptance test of cauchy/dcs
   double cauchy_scale = 1.0;        ///< c of the Cauchy loss, chi units (Ceres' CauchyLoss(1))
   double dcs_phi = 1.0;             ///< Phi of DCS, chi^2 units (Agarwal et al. 2013 use 1)
+  bool check_clique = true;         ///< pcm-*: the joint check of the clique (above)
+  int check_start_iterations = 10;  ///< pcm-*: least-squares iterations that start the check
   GncSettings gnc;                  ///< graduated non-convexity
   clique::ExactSettings exact;      ///< pcm-exact: branch and bound (60 s budget)
   clique::AcoSearchSettings aco;    ///< pcm-aco: variant, ants, termination (backend: below)
