@@ -35,9 +35,8 @@ std::vector<slam::Pose2> solve_trusted(const slam::FragmentSet& set,
   return slam::optimize_with_ceres(subset, initial, false, settings.ceres).frames;
 }
 
-/// PCM: the trusted closures are a maximum clique of the pairwise consistency graph.
-Closing close_consistent(const slam::FragmentSet& set, std::span<const slam::Pose2> initial,
-                         const ClosingSettings& settings) {
+/// PCM: the maximum clique of the pairwise consistency graph.
+Closing consistent_set(const slam::FragmentSet& set, const ClosingSettings& settings) {
   const slam::RobustSettings& pcm = settings.pcm;
   const slam::ConsistencyGraph consistency =
       slam::pairwise_consistency(set, {pcm.inlier_confidence, pcm.backend, pcm.threads});
@@ -48,7 +47,6 @@ Closing close_consistent(const slam::FragmentSet& set, std::span<const slam::Pos
   out.clique = slam::maximum_consistent_set(consistency, method, pcm);
   out.trusted.assign(set.closures.size(), false);
   for (const std::uint32_t c : out.clique->clique.vertices) out.trusted[c] = true;
-  out.frames = solve_trusted(set, initial, out.trusted, settings, out);
   return out;
 }
 
@@ -68,10 +66,16 @@ Closing close_loops(const slam::FragmentSet& set, std::span<const slam::Pose2> s
     throw std::invalid_argument("closing: got " + std::to_string(start.size()) +
                                 " frames, expected " + std::to_string(set.fragments.size()));
   const std::vector<slam::Pose2> initial = slam::relative_alignments(start);
-  if (settings.selection != ClosureSelection::iterative_chi2)
-    return close_consistent(set, initial, settings);
   Closing out;
-  out.trusted.assign(set.closures.size(), true);
+  if (settings.selection == ClosureSelection::iterative_chi2) {
+    out.trusted.assign(set.closures.size(), true);
+  } else {
+    out = consistent_set(set, settings);
+    if (!settings.pcm.check_clique) {
+      out.frames = solve_trusted(set, initial, out.trusted, settings, out);
+      return out;
+    }
+  }
   for (;;) {
     out.frames = solve_trusted(set, initial, out.trusted, settings, out);
     // The trusted closure that agrees worst with the joint solution.

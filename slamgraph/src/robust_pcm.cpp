@@ -89,10 +89,10 @@ void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
     for (const std::uint32_t k : report.clique.vertices) result.accepted[k] = true;
     result.clique = report;
   }
-  const bool checked = settings.check_clique && m > 0;
-  if (checked) check_clique(graph, initial, settings, result);
-  optimize(graph, checked ? result.poses : initial,
-           edge_losses(graph, result.split, keep_only(result.accepted)), settings, result);
+  if (settings.check_clique && m > 0) check_clique(graph, initial, settings, result);
+  // From the odometry again: the check's solve can end in a wrong basin with right decisions.
+  optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), settings,
+           result);
 }
 
 }  // namespace antslam::slam::detail

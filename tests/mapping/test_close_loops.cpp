@@ -87,7 +87,8 @@ TEST_P(EverySelection, DropsTheFalseClosureKeepsTheTrueOnesAndSolvesOverThem) {
   for (std::size_t k = 0; k < true_closures; ++k)
     EXPECT_LT(mahalanobis(set.closures[k], c.frames), 3.4);
   EXPECT_GT(mahalanobis(set.closures.back(), c.frames), 20.0);
-  // PCM solves once, over the clique; the rejection solves again after distrusting.
+  // PCM solves once, over the clique, which passes the joint check; the rejection solves again
+  // after distrusting.
   const bool pcm = GetParam().value != ClosureSelection::iterative_chi2;
   EXPECT_EQ(c.solves, pcm ? 1U : 2U);
   ASSERT_EQ(c.clique.has_value(), pcm);
@@ -110,6 +111,30 @@ TEST(CloseLoops, SelectionNamesRoundTrip) {
   }
   EXPECT_FALSE(parse_closure_selection("pcm").has_value());
   EXPECT_EQ(ClosingSettings{}.selection, ClosureSelection::iterative_chi2);  // the default
+}
+
+TEST(CloseLoops, PcmCliquePassesTheSameJointCheckUnlessSwitchedOff) {
+  // With a threshold no closure can pass, the check distrusts every closure of the clique in
+  // turn; PCM as published (no check) trusts the clique as it is, with one solve.
+  const slam::FragmentSet set = two_laps();
+  const std::vector<slam::Pose2> start = slam::chain(slam::mean_alignments(set));
+  ClosingSettings strict;
+  strict.outlier_chi2 = 1e-12;
+  for (const ClosureSelection selection :
+       {ClosureSelection::pcm_exact, ClosureSelection::pcm_aco}) {
+    strict.selection = selection;
+    strict.pcm.check_clique = true;
+    const Closing checked = close_loops(set, start, strict);
+    ASSERT_TRUE(checked.clique);
+    EXPECT_EQ(checked.clique->clique.vertices.size(), set.closures.size());
+    EXPECT_EQ(std::count(checked.trusted.begin(), checked.trusted.end(), true), 0);
+    EXPECT_EQ(checked.solves, set.closures.size());
+    strict.pcm.check_clique = false;
+    const Closing published = close_loops(set, start, strict);
+    EXPECT_EQ(std::count(published.trusted.begin(), published.trusted.end(), true),
+              static_cast<std::ptrdiff_t>(set.closures.size()));
+    EXPECT_EQ(published.solves, 1U);
+  }
 }
 
 TEST(CloseLoops, ATrueClosureFarFromADriftedMapIsTrustedAndClosed) {

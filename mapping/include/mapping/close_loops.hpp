@@ -9,8 +9,9 @@
 // `iterative-chi2`, the default). Or the trusted closures are a maximum clique of pairwise
 // consistent closures (PCM, Mangelson et al. 2018; slamgraph/consistency.hpp on the fragment
 // set: its alignments are the chain), found by branch and bound (`pcm-exact`) or by the ants
-// (`pcm-aco`), with one least-squares solve over them. The map is the least-squares solution
-// over the trusted closures: none is given up for being far.
+// (`pcm-aco`), and the same iterative rejection then checks the clique jointly (without it,
+// pcm.check_clique false, one least-squares solve over the clique: PCM as published). The map
+// is the least-squares solution over the trusted closures: none is given up for being far.
 
 #include <array>
 #include <cstddef>
@@ -37,8 +38,10 @@ struct ClosureSelectionInfo {
 inline constexpr std::array<ClosureSelectionInfo, 3> kClosureSelections{{
     {ClosureSelection::iterative_chi2, "iterative-chi2",
      "distrust the worst closure of the joint solution until all pass chi2"},
-    {ClosureSelection::pcm_exact, "pcm-exact", "PCM maximum clique by branch and bound"},
-    {ClosureSelection::pcm_aco, "pcm-aco", "PCM maximum clique by the ants"},
+    {ClosureSelection::pcm_exact, "pcm-exact",
+     "PCM maximum clique by branch and bound, then the iterative chi2 check on it"},
+    {ClosureSelection::pcm_aco, "pcm-aco",
+     "PCM maximum clique by the ants, then the iterative chi2 check on it"},
 }};
 
 std::string_view to_string(ClosureSelection selection);
@@ -51,7 +54,8 @@ struct ClosingSettings {
                                  ///< chi-square, 3 dof, 99 %
   slam::CeresSettings ceres;     ///< every least-squares solve
   slam::RobustSettings pcm;      ///< pcm-*: the consistency test's confidence (0.99), the clique
-                                 ///< searches, backend and threads (its Ceres settings unused)
+                                 ///< searches, backend, threads and check_clique (its Ceres and
+                                 ///< DCS settings unused)
 };
 
 /// Throws std::invalid_argument naming the first nonsensical field.
