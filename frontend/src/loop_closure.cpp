@@ -21,35 +21,30 @@ std::string format(const char* pattern, double a, double b = 0.0) {
 }  // namespace
 
 void validate(const LoopClosureSettings& s) {
-  require_setting("loop closure", positive(s.resolution), "resolution", "must be positive");
-  require_setting("loop closure", positive(s.sigma), "sigma", "must be positive");
-  require_setting("loop closure", s.levels >= 1 && s.levels <= 12, "levels", "must be in [1, 12]");
-  require_setting("loop closure", positive(s.point_spacing), "point_spacing", "must be positive");
-  require_setting("loop closure", positive(s.max_range), "max_range", "must be positive");
-  require_setting("loop closure", s.min_score > 0.0 && s.min_score <= 1.0, "min_score",
-                  "must be in (0, 1]");
-  require_setting("loop closure", s.max_second_ratio > 0.0 && s.max_second_ratio <= 1.0,
-                  "max_second_ratio", "must be in (0, 1]");
-  require_setting("loop closure", s.exclusion_linear >= 0.0 && s.exclusion_angular >= 0.0,
-                  "exclusion", "must be >= 0");
-  require_setting("loop closure", positive(s.window_sigmas), "window_sigmas", "must be positive");
-  require_setting("loop closure",
-                  s.min_window_linear >= 0.0 && s.max_window_linear >= s.min_window_linear &&
-                      s.max_window_linear <= 50.0,
-                  "window linear limits", "must be ordered and at most 50 m");
-  require_setting("loop closure",
-                  s.min_window_angular >= 0.0 && s.max_window_angular >= s.min_window_angular &&
-                      s.max_window_angular <= 3.1416,
-                  "window angular limits", "must be ordered and at most pi");
-  require_setting("loop closure", s.min_fragment_gap >= 1, "min_fragment_gap",
-                  "must be at least 1");
-  require_setting("loop closure", s.target_neighbours <= 20, "target_neighbours",
-                  "must be at most 20");
-  require_setting("loop closure", s.overlap_radius >= 0.0 && std::isfinite(s.overlap_radius),
-                  "overlap_radius", "must be >= 0");
-  require_setting("loop closure", s.min_uncertainty >= 0.0 && std::isfinite(s.min_uncertainty),
-                  "min_uncertainty", "must be >= 0");
-  require_setting("loop closure", positive(s.temperature), "temperature", "must be positive");
+  const SettingCheck require{"loop closure"};
+  require(positive(s.resolution), "resolution", "must be positive");
+  require(positive(s.sigma), "sigma", "must be positive");
+  require(s.levels >= 1 && s.levels <= 12, "levels", "must be in [1, 12]");
+  require(positive(s.point_spacing), "point_spacing", "must be positive");
+  require(positive(s.max_range), "max_range", "must be positive");
+  require(s.min_score > 0.0 && s.min_score <= 1.0, "min_score", "must be in (0, 1]");
+  require(s.max_second_ratio > 0.0 && s.max_second_ratio <= 1.0, "max_second_ratio",
+          "must be in (0, 1]");
+  require(s.exclusion_linear >= 0.0 && s.exclusion_angular >= 0.0, "exclusion", "must be >= 0");
+  require(positive(s.window_sigmas), "window_sigmas", "must be positive");
+  require(s.min_window_linear >= 0.0 && s.max_window_linear >= s.min_window_linear &&
+              s.max_window_linear <= 50.0,
+          "window linear limits", "must be ordered and at most 50 m");
+  require(s.min_window_angular >= 0.0 && s.max_window_angular >= s.min_window_angular &&
+              s.max_window_angular <= 3.1416,
+          "window angular limits", "must be ordered and at most pi");
+  require(s.min_fragment_gap >= 1, "min_fragment_gap", "must be at least 1");
+  require(s.target_neighbours <= 20, "target_neighbours", "must be at most 20");
+  require(s.overlap_radius >= 0.0 && std::isfinite(s.overlap_radius), "overlap_radius",
+          "must be >= 0");
+  require(s.min_uncertainty >= 0.0 && std::isfinite(s.min_uncertainty), "min_uncertainty",
+          "must be >= 0");
+  require(positive(s.temperature), "temperature", "must be positive");
 }
 
 namespace {

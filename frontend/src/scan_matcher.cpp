@@ -29,69 +29,53 @@ std::string_view to_string(MatchStatus status) {
 }
 
 void validate(const ScanMatcherSettings& s) {
-  require_setting("scan matcher", s.min_range >= 0.0 && std::isfinite(s.min_range), "min_range",
-                  "must be >= 0");
-  require_setting("scan matcher", positive(s.max_range) && s.max_range > s.min_range, "max_range",
-                  "must be positive and above min_range");
-  require_setting("scan matcher", positive(s.max_match_range) && s.max_match_range > s.min_range,
-                  "max_match_range", "must be positive and above min_range");
-  require_setting("scan matcher", s.surface_incidence >= 0.0 && s.surface_incidence < 1.6,
-                  "surface_incidence", "must be in [0, pi / 2)");
-  require_setting("scan matcher", positive(s.resolution), "resolution", "must be positive");
-  require_setting("scan matcher", positive(s.sigma), "sigma", "must be positive");
-  require_setting("scan matcher",
-                  positive(s.coarse_resolution) && s.coarse_resolution >= s.resolution,
-                  "coarse_resolution", "must be positive and at least the fine resolution");
-  require_setting("scan matcher", positive(s.coarse_sigma), "coarse_sigma", "must be positive");
-  require_setting("scan matcher", positive(s.point_spacing), "point_spacing", "must be positive");
-  require_setting("scan matcher", s.linear_window >= 0.0 && s.linear_window <= 10.0,
-                  "linear_window", "must be in [0, 10] m");
-  require_setting("scan matcher", s.angular_window >= 0.0 && s.angular_window <= 3.2,
-                  "angular_window", "must be in [0, pi]");
-  require_setting("scan matcher", positive(s.window_sigmas), "window_sigmas", "must be positive");
-  require_setting("scan matcher",
-                  s.max_linear_window >= s.linear_window && s.max_linear_window <= 10.0,
-                  "max_linear_window", "must be in [linear_window, 10] m");
-  require_setting("scan matcher", positive(s.coarse_angular_step), "coarse_angular_step",
-                  "must be positive");
-  require_setting("scan matcher", positive(s.fine_angular_step), "fine_angular_step",
-                  "must be positive");
-  require_setting("scan matcher", s.coarse_peaks >= 1 && s.coarse_peaks <= 20, "coarse_peaks",
-                  "must be in [1, 20]");
-  require_setting("scan matcher", positive(s.temperature), "temperature", "must be positive");
-  require_setting("scan matcher", s.prior_weight >= 0.0 && std::isfinite(s.prior_weight),
-                  "prior_weight", "must be >= 0");
-  require_setting("scan matcher", positive(s.local_map_length), "local_map_length",
-                  "must be positive");
+  const SettingCheck require{"scan matcher"};
+  require(s.min_range >= 0.0 && std::isfinite(s.min_range), "min_range", "must be >= 0");
+  require(positive(s.max_range) && s.max_range > s.min_range, "max_range",
+          "must be positive and above min_range");
+  require(positive(s.max_match_range) && s.max_match_range > s.min_range, "max_match_range",
+          "must be positive and above min_range");
+  require(s.surface_incidence >= 0.0 && s.surface_incidence < 1.6, "surface_incidence",
+          "must be in [0, pi / 2)");
+  require(positive(s.resolution), "resolution", "must be positive");
+  require(positive(s.sigma), "sigma", "must be positive");
+  require(positive(s.coarse_resolution) && s.coarse_resolution >= s.resolution, "coarse_resolution",
+          "must be positive and at least the fine resolution");
+  require(positive(s.coarse_sigma), "coarse_sigma", "must be positive");
+  require(positive(s.point_spacing), "point_spacing", "must be positive");
+  require(s.linear_window >= 0.0 && s.linear_window <= 10.0, "linear_window",
+          "must be in [0, 10] m");
+  require(s.angular_window >= 0.0 && s.angular_window <= 3.2, "angular_window",
+          "must be in [0, pi]");
+  require(positive(s.window_sigmas), "window_sigmas", "must be positive");
+  require(s.max_linear_window >= s.linear_window && s.max_linear_window <= 10.0,
+          "max_linear_window", "must be in [linear_window, 10] m");
+  require(positive(s.coarse_angular_step), "coarse_angular_step", "must be positive");
+  require(positive(s.fine_angular_step), "fine_angular_step", "must be positive");
+  require(s.coarse_peaks >= 1 && s.coarse_peaks <= 20, "coarse_peaks", "must be in [1, 20]");
+  require(positive(s.temperature), "temperature", "must be positive");
+  require(s.prior_weight >= 0.0 && std::isfinite(s.prior_weight), "prior_weight", "must be >= 0");
+  require(positive(s.local_map_length), "local_map_length", "must be positive");
   validate(s.odometry);
-  require_setting("scan matcher", positive(s.divergence_sigmas), "divergence_sigmas",
-                  "must be positive");
-  require_setting("scan matcher", s.trusted_fit >= 0.0 && s.trusted_fit <= 1.0, "trusted_fit",
-                  "must be in [0, 1]");
-  require_setting("scan matcher",
-                  s.fallback_inflation >= 1.0 && std::isfinite(s.fallback_inflation),
-                  "fallback_inflation", "must be >= 1");
-  require_setting("scan matcher", positive(s.inlier_distance), "inlier_distance",
-                  "must be positive");
-  require_setting("scan matcher", s.recovery_fraction >= 0.0 && s.recovery_fraction <= 1.0,
-                  "recovery_fraction", "must be in [0, 1]");
-  require_setting("scan matcher", s.recovery_gain >= 0.0 && s.recovery_gain <= 1.0, "recovery_gain",
-                  "must be in [0, 1]");
-  require_setting("scan matcher",
-                  s.recovery_linear_window >= 0.0 && s.recovery_linear_window <= 10.0,
-                  "recovery_linear_window", "must be in [0, 10] m");
-  require_setting("scan matcher",
-                  s.recovery_angular_window >= 0.0 && s.recovery_angular_window <= 3.2,
-                  "recovery_angular_window", "must be in [0, pi]");
+  require(positive(s.divergence_sigmas), "divergence_sigmas", "must be positive");
+  require(s.trusted_fit >= 0.0 && s.trusted_fit <= 1.0, "trusted_fit", "must be in [0, 1]");
+  require(s.fallback_inflation >= 1.0 && std::isfinite(s.fallback_inflation), "fallback_inflation",
+          "must be >= 1");
+  require(positive(s.inlier_distance), "inlier_distance", "must be positive");
+  require(s.recovery_fraction >= 0.0 && s.recovery_fraction <= 1.0, "recovery_fraction",
+          "must be in [0, 1]");
+  require(s.recovery_gain >= 0.0 && s.recovery_gain <= 1.0, "recovery_gain", "must be in [0, 1]");
+  require(s.recovery_linear_window >= 0.0 && s.recovery_linear_window <= 10.0,
+          "recovery_linear_window", "must be in [0, 10] m");
+  require(s.recovery_angular_window >= 0.0 && s.recovery_angular_window <= 3.2,
+          "recovery_angular_window", "must be in [0, pi]");
   const PosteriorSettings& p = s.posterior;
-  require_setting("scan matcher", p.steps >= 1 && p.steps <= 10, "posterior.steps",
-                  "must be in [1, 10]");
-  require_setting("scan matcher", p.rounds >= 1 && p.rounds <= 10, "posterior.rounds",
-                  "must be in [1, 10]");
-  require_setting("scan matcher", positive(p.min_linear) && p.max_linear >= p.min_linear,
-                  "posterior linear limits", "must be positive and ordered");
-  require_setting("scan matcher", positive(p.min_angular) && p.max_angular >= p.min_angular,
-                  "posterior angular limits", "must be positive and ordered");
+  require(p.steps >= 1 && p.steps <= 10, "posterior.steps", "must be in [1, 10]");
+  require(p.rounds >= 1 && p.rounds <= 10, "posterior.rounds", "must be in [1, 10]");
+  require(positive(p.min_linear) && p.max_linear >= p.min_linear, "posterior linear limits",
+          "must be positive and ordered");
+  require(positive(p.min_angular) && p.max_angular >= p.min_angular, "posterior angular limits",
+          "must be positive and ordered");
 }
 
 Points matching_points(const LaserScan& scan, const ScanMatcherSettings& s) {

@@ -7,10 +7,13 @@
 
 namespace antslam::frontend {
 
-/// Throws std::invalid_argument("<who>: <field> <what>") unless ok.
-inline void require_setting(const char* who, bool ok, const char* field, const char* what) {
-  if (!ok) throw std::invalid_argument(std::string(who) + ": " + field + " " + what);
-}
+/// `require(ok, field, what)` throws std::invalid_argument("<who>: <field> <what>") unless ok.
+struct SettingCheck {
+  const char* who;  ///< the component named in the message
+  void operator()(bool ok, const char* field, const char* what) const {
+    if (!ok) throw std::invalid_argument(std::string(who) + ": " + field + " " + what);
+  }
+};
 
 inline bool positive(double v) { return v > 0.0 && std::isfinite(v); }
 

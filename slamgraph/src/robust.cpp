@@ -42,6 +42,14 @@ std::vector<double> closure_chi2(const PoseGraph& graph, const ChainSplit& split
   return chi2;
 }
 
+std::vector<bool> closures_within(const PoseGraph& graph, const ChainSplit& split,
+                                  const std::vector<Pose2>& poses, double c2) {
+  const std::vector<double> chi2 = closure_chi2(graph, split, poses);
+  std::vector<bool> within(chi2.size());
+  for (std::size_t k = 0; k < chi2.size(); ++k) within[k] = chi2[k] <= c2;
+  return within;
+}
+
 }  // namespace detail
 
 namespace {
@@ -80,9 +88,7 @@ void run_m_estimator(const PoseGraph& graph, const std::vector<Pose2>& initial, 
     result.accepted.assign(m, true);
     return;
   }
-  const std::vector<double> chi2 = detail::closure_chi2(graph, result.split, result.poses);
-  result.accepted.resize(m);
-  for (std::size_t k = 0; k < m; ++k) result.accepted[k] = chi2[k] <= c2;
+  result.accepted = detail::closures_within(graph, result.split, result.poses, c2);
 }
 
 }  // namespace
@@ -113,7 +119,7 @@ RobustResult solve_robust(const PoseGraph& graph, RobustMethod method,
       break;
     case RobustMethod::pcm_exact:
     case RobustMethod::pcm_aco:
-      detail::run_pcm(graph, initial, settings, result);
+      detail::run_pcm(graph, initial, c2, settings, result);
       break;
   }
   result.total_s = detail::seconds_since(start);

@@ -30,10 +30,14 @@ void optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
 std::vector<double> closure_chi2(const PoseGraph& graph, const ChainSplit& split,
                                  const std::vector<Pose2>& poses);
 
+/// Per closure: whether its squared residual at `poses` passes the chi-square test c2.
+std::vector<bool> closures_within(const PoseGraph& graph, const ChainSplit& split,
+                                  const std::vector<Pose2>& poses, double c2);
+
 void run_gnc(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
              const RobustSettings& settings, RobustResult& result);
 
-void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
+void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
              const RobustSettings& settings, RobustResult& result);
 
 }  // namespace antslam::slam::detail

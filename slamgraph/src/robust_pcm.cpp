@@ -8,7 +8,6 @@
 
 #include "clique/graph.hpp"
 #include "robust_detail.hpp"
-#include "slamgraph/chi_square.hpp"
 #include "slamgraph/consistency.hpp"
 
 namespace antslam::slam {
@@ -55,7 +54,7 @@ std::vector<EdgeLoss> keep_only(const std::vector<bool>& kept) {
 /// closure stays accepted when its residual passes the chi-square test. Pairwise tests over long
 /// odometry spans have little power, so a clique can hold false closures that agree with every
 /// other one pairwise but not with the map the others make together.
-void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial,
+void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
                   const RobustSettings& settings, RobustResult& result) {
   RobustSettings start = settings;
   start.ceres.max_iterations = settings.check_start_iterations;
@@ -65,15 +64,14 @@ void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial,
   for (std::size_t k = 0; k < loss.size(); ++k)
     if (result.accepted[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
   optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
-  const double c2 = chi_square3_quantile(settings.inlier_confidence);
-  const std::vector<double> chi2 = closure_chi2(graph, result.split, result.poses);
-  for (std::size_t k = 0; k < chi2.size(); ++k)
-    result.accepted[k] = result.accepted[k] && chi2[k] <= c2;
+  const std::vector<bool> within = closures_within(graph, result.split, result.poses, c2);
+  for (std::size_t k = 0; k < within.size(); ++k)
+    result.accepted[k] = result.accepted[k] && within[k];
 }
 
 }  // namespace
 
-void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
+void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
              const RobustSettings& settings, RobustResult& result) {
   const std::size_t m = result.split.closures.size();
   result.accepted.assign(m, false);
@@ -89,7 +87,7 @@ void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial,
     for (const std::uint32_t k : report.clique.vertices) result.accepted[k] = true;
     result.clique = report;
   }
-  if (settings.check_clique && m > 0) check_clique(graph, initial, settings, result);
+  if (settings.check_clique && m > 0) check_clique(graph, initial, c2, settings, result);
   // From the odometry again: the check's solve can end in a wrong basin with right decisions.
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), settings,
            result);
