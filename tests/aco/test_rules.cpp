@@ -31,6 +31,13 @@ void expect_choose_matches_distribution(const Rule& rule) {
   for (int i = 0; i < n; ++i) count[rule.choose(std::span<const double>(kWeights), rng)] += 1.0;
   for (std::size_t j = 0; j < p.size(); ++j)
     EXPECT_NEAR(count[j] / n, p[j], 0.005) << "option " << j;
+  // Given the sum of the weights, choose() draws the same options from the same random numbers.
+  Rng plain(5), given(5);
+  const double sum = detail::sum(kWeights);
+  for (int i = 0; i < 10000; ++i)
+    ASSERT_EQ(rule.choose(std::span<const double>(kWeights), plain),
+              rule.choose(std::span<const double>(kWeights), sum, given))
+        << "draw " << i;
 }
 
 TEST(Rules, RandomProportionalIsEq1) {

@@ -57,6 +57,36 @@ TEST(SubsetFamily, AntsBuildMaximalCompatibleSets) {
   }
 }
 
+/// The random-proportional rule that checks, at every step, that the sum the construction hands
+/// it is exactly what detail::sum gives for the candidates' weights.
+struct SumCheckingRule {
+  template <class R>
+  std::size_t choose(std::span<const double> w, double total, R& rng) const {
+    EXPECT_EQ(total, detail::sum(w));
+    ++*steps;
+    return RandomProportional{}.choose(w, total, rng);
+  }
+  std::size_t* steps;
+};
+
+TEST(SubsetFamily, TheSumOfTheCandidatesWeightsIsKeptExactly) {
+  const testing::ConflictSubsetProblem problem(40, 0.3, 5);
+  SubsetFamily<testing::ConflictSubsetProblem> family(problem, 1.0, 2.0);
+  family.trail().fill(1.0);
+  family.reserve_ants(1);
+  std::size_t steps = 0;
+  const SumCheckingRule rule{&steps};
+  family.prepare(rule);
+  std::vector<std::uint32_t> checked, plain;
+  for (std::uint64_t a = 0; a < 20; ++a) {
+    Rng rng = ant_stream(3, 1, a), same = ant_stream(3, 1, a);
+    family.construct(0, checked, rng, rule);
+    family.construct(0, plain, same, RandomProportional{});
+    EXPECT_EQ(checked, plain);
+  }
+  EXPECT_GT(steps, 20U);
+}
+
 /// Three elements, 0 conflicts with 1; heuristic 3, 2, 1: the greedy takes 0, then 2.
 struct TinySubsetProblem {
   std::size_t element_count() const { return 3; }

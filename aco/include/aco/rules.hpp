@@ -55,7 +55,11 @@ inline void proportional(std::span<const double> w, std::span<double> p, double 
 struct RandomProportional {
   template <class R>
   std::size_t choose(std::span<const double> w, R& rng) const {
-    return detail::roulette(w, detail::sum(w), rng.uniform());
+    return choose(w, detail::sum(w), rng);
+  }
+  template <class R>
+  std::size_t choose(std::span<const double> w, double total, R& rng) const {
+    return detail::roulette(w, total, rng.uniform());
   }
   void distribution(std::span<const double> w, std::span<double> p) const {
     detail::proportional(w, p, 1.0);
@@ -72,6 +76,11 @@ struct PseudoRandomProportional {
     if (rng.uniform() < q0) return detail::argmax(w);
     return detail::roulette(w, detail::sum(w), rng.uniform());
   }
+  template <class R>
+  std::size_t choose(std::span<const double> w, double total, R& rng) const {
+    if (rng.uniform() < q0) return detail::argmax(w);
+    return detail::roulette(w, total, rng.uniform());
+  }
   void distribution(std::span<const double> w, std::span<double> p) const {
     detail::proportional(w, p, 1.0 - q0);
     p[detail::argmax(w)] += q0;
@@ -87,6 +96,11 @@ struct UniformExploration {
   std::size_t choose(std::span<const double> w, R& rng) const {
     if (rng.uniform() < p0) return rng.below(static_cast<std::uint32_t>(w.size()));
     return detail::roulette(w, detail::sum(w), rng.uniform());
+  }
+  template <class R>
+  std::size_t choose(std::span<const double> w, double total, R& rng) const {
+    if (rng.uniform() < p0) return rng.below(static_cast<std::uint32_t>(w.size()));
+    return detail::roulette(w, total, rng.uniform());
   }
   void distribution(std::span<const double> w, std::span<double> p) const {
     detail::proportional(w, p, 1.0 - p0);

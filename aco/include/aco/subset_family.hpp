@@ -4,7 +4,7 @@
 // from the candidates with the construction rule over the weights tau_e^alpha eta_e^beta, takes
 // it, and keeps only the candidates compatible with it; it stops when no candidate is left, so
 // its set is maximal. The candidates stay in element order and are compacted without branches,
-// so a step costs O(candidates).
+// in the same pass that adds up their weights for the next draw, so a step costs O(candidates).
 
 #include <cmath>
 #include <cstddef>
@@ -51,7 +51,7 @@ class SubsetFamily {
   double reference_cost() const {
     Scratch s = make_scratch();
     std::vector<std::uint32_t> subset;
-    build(s, eta_beta_, subset, [](std::span<const double> w) {
+    build(s, eta_beta_, subset, [](std::span<const double> w, double) {
       std::size_t best = 0;
       for (std::size_t r = 1; r < w.size(); ++r)
         if (w[r] > w[best]) best = r;
@@ -72,7 +72,7 @@ class SubsetFamily {
   template <class Rule>
   void construct(std::size_t ant, std::vector<std::uint32_t>& subset, Rng& rng, const Rule& rule) {
     build(scratch_[ant], weight_, subset,
-          [&](std::span<const double> w) { return rule.choose(w, rng); });
+          [&](std::span<const double> w, double total) { return rule.choose(w, total, rng); });
   }
 
   /// Ant Colony System (local_update_after_construction.hpp).
@@ -97,25 +97,33 @@ class SubsetFamily {
     return s;
   }
 
-  /// Builds a maximal set: pick(weights of the candidates) gives the index of the next element.
+  /// Builds a maximal set: pick(weights of the candidates, their sum) gives the index of the next
+  /// element. The sum is accumulated in candidate order, as detail::sum would.
   template <class Pick>
   void build(Scratch& s, const std::vector<double>& weights, std::vector<std::uint32_t>& subset,
              Pick&& pick) const {
     std::size_t count = weights.size();
+    double total = 0.0;
     for (std::uint32_t e = 0; e < count; ++e) {
       s.element[e] = e;
       s.weight[e] = weights[e];
+      total += weights[e];
     }
     subset.clear();
     while (count > 0) {
-      const std::uint32_t chosen = s.element[pick(std::span<const double>(s.weight.data(), count))];
+      const std::uint32_t chosen =
+          s.element[pick(std::span<const double>(s.weight.data(), count), total)];
       subset.push_back(chosen);
       std::size_t kept = 0;
+      total = 0.0;
       for (std::size_t r = 0; r < count; ++r) {
         const std::uint32_t c = s.element[r];
+        const double w = s.weight[r];
+        const bool keep = c != chosen && problem_->compatible(chosen, c);
         s.element[kept] = c;
-        s.weight[kept] = s.weight[r];
-        kept += (c != chosen && problem_->compatible(chosen, c)) ? 1U : 0U;
+        s.weight[kept] = w;
+        total += keep ? w : 0.0;
+        kept += keep ? 1U : 0U;
       }
       count = kept;
     }
