@@ -44,6 +44,9 @@ def options():
     count_option(p, "--threads", "threads of the consistency and the ants", 2, 2)
     ranks_option(p)
     p.add_argument("--resume", action="store_true", help="keep the runs already in OUT/runs")
+    p.add_argument("--collect", action="store_true",
+                   help="run nothing: tabulate and plot the runs in OUT/runs (a grid gathered "
+                        "from several calls; cases without a run are left out)")
     args = p.parse_args()
     defaults = QUICK if args.quick else FULL
     for name, value in defaults.items():
@@ -73,7 +76,7 @@ def run_cases(args, cases):
                                              else [])
         for method in args.methods:
             prefix = os.path.join(args.out, "runs", f"{graph}-{kind}-{count}-{seed}-{method}")
-            if not (args.resume and os.path.exists(prefix + ".json")):
+            if not (args.collect or (args.resume and os.path.exists(prefix + ".json"))):
                 todo.append((spoiled, outliers, method, prefix, refs))
     needed = {t[0]: t[1] for t in todo if not os.path.exists(t[0])}
     run_batch(args, list(needed.values()), "outliers")
@@ -89,8 +92,9 @@ def run_cases(args, cases):
     for graph, kind, count, seed, _, _ in cases:
         spoiled, _ = spoil(args, graph, kind, count, seed)
         for method in args.methods:
-            rows.append(row_of(graph, kind, count, seed, method, os.path.join(
-                args.out, "runs", f"{graph}-{kind}-{count}-{seed}-{method}")))
+            prefix = os.path.join(args.out, "runs", f"{graph}-{kind}-{count}-{seed}-{method}")
+            if not (args.collect and not os.path.exists(prefix + ".json")):
+                rows.append(row_of(graph, kind, count, seed, method, prefix))
         for path in (spoiled, spoiled.replace(".g2o", ".outliers.txt")):
             if os.path.exists(path):
                 os.remove(path)
