@@ -93,7 +93,7 @@ def run_cases(args, cases):
         spoiled, _ = spoil(args, graph, kind, count, seed)
         for method in args.methods:
             prefix = os.path.join(args.out, "runs", f"{graph}-{kind}-{count}-{seed}-{method}")
-            if not (args.collect and not os.path.exists(prefix + ".json")):
+            if os.path.exists(prefix + ".json") or not args.collect:
                 rows.append(row_of(graph, kind, count, seed, method, prefix))
         for path in (spoiled, spoiled.replace(".g2o", ".outliers.txt")):
             if os.path.exists(path):
