@@ -6,6 +6,8 @@
 // in tests/tsp and tests/contract), so the ratio of the rates is the speed-up.
 //
 //   build/bench/bench_tsp_colony --benchmark_filter=ColonyStep
+//
+// BM_MaxMinTrailUpdate times the serial-or-chunked part alone: the trail update of one iteration.
 
 #include <benchmark/benchmark.h>
 
@@ -51,6 +53,39 @@ BENCHMARK(BM_ColonyStep)
     ->MinTime(5.0)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+
+/// MAX-MIN's end-of-iteration trail update (evaporation, the best tour's deposit, the trail
+/// limits) on the colony's trail after 20 iterations, its entries split over the backend's
+/// threads (aco/chunked_for.hpp). Arguments: cities, threads.
+void BM_MaxMinTrailUpdate(benchmark::State& state) {
+  const tsp::TspProblem& p = uniform_problem(static_cast<std::size_t>(state.range(0)));
+  const auto threads = static_cast<std::size_t>(state.range(1));
+  const tsp::SolverSettings settings;
+  const aco::Parameters parameters = tsp::resolved_parameters(p, settings);
+  aco::AnyBackend backend = aco::make_backend(aco::BackendKind::automatic, threads);
+  const aco::ChunkedFor parallel(backend);
+  aco::with_colony(p, parameters, backend, tsp::TourLocalSearch(settings.local_search),
+                   [&](auto& colony) {
+                     for (int warm = 0; warm < 20; ++warm) colony.step();
+                     auto trail = colony.trail();
+                     const aco::Solution& best = colony.best();
+                     const double tau_max = trail.max_value();
+                     for (auto _ : state) {
+                       trail.evaporate(0.2, parallel);
+                       trail.deposit(best.path, 1.0 / best.cost, parallel);
+                       trail.clamp(tau_max / 1000.0, tau_max, parallel);
+                     }
+                     benchmark::DoNotOptimize(trail.values().data());
+                     return 0;
+                   });
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+BENCHMARK(BM_MaxMinTrailUpdate)
+    ->ArgsProduct({{15000}, {1, 2}})
+    ->ArgNames({"cities", "threads"})
+    ->MinTime(2.0)
+    ->UseRealTime()
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -205,8 +205,8 @@ class Colony {
     // trail update -- every ant's deposit on every edge of its tour, seconds on a million cities
     // -- would never be used.
     if (!stop.expired())
-      update_.apply(family_.trail(),
-                    IterationView{ants_, ranking_, iteration_best, best_, iteration_});
+      update_.apply(family_.trail(), IterationView{ants_, ranking_, iteration_best, best_,
+                                                   iteration_, ChunkedFor(backend_)});
     return report;
   }
 

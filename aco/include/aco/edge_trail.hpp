@@ -81,15 +81,20 @@ class EdgeTrail : public PheromoneValues {
   /// A converged node of a symmetric tour keeps two strong edges.
   static constexpr double converged_branching() { return 2.0; }
 
-  /// Calls f(tau) once on every candidate edge of the closed tour.
+  /// Calls f(tau) once on every candidate edge of the closed tour. The tour visits every node
+  /// once, so its edges are distinct and chunks of it touch disjoint entries.
   template <class F>
-  void update_path(std::span<const std::uint32_t> tour, F&& f) {
-    for (std::size_t s = 0; s < tour.size(); ++s)
-      update_edge(tour[s], tour[s + 1 == tour.size() ? 0 : s + 1], f);
+  void update_path(std::span<const std::uint32_t> tour, F&& f, const ChunkedFor& parallel = {}) {
+    parallel(tour.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t s = begin; s < end; ++s)
+        update_edge(tour[s], tour[s + 1 == tour.size() ? 0 : s + 1], f);
+    });
   }
 
-  void deposit(std::span<const std::uint32_t> tour, double amount) {
-    update_path(tour, [amount](double& t) { t += amount; });
+  void deposit(std::span<const std::uint32_t> tour, double amount,
+               const ChunkedFor& parallel = {}) {
+    update_path(
+        tour, [amount](double& t) { t += amount; }, parallel);
   }
 
   /// Mean lambda-branching factor over the candidate lists (as ACOTSP's node_branching).

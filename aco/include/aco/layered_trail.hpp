@@ -48,13 +48,17 @@ class LayeredTrail : public PheromoneValues {
 
   /// Calls f(tau) on the pheromone of every option the path chose.
   template <class F>
-  void update_path(std::span<const std::uint32_t> path, F&& f) {
-    for (std::size_t l = 0; l < path.size(); ++l) f(tau_[offset_[l] + path[l]]);
+  void update_path(std::span<const std::uint32_t> path, F&& f, const ChunkedFor& parallel = {}) {
+    parallel(path.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t l = begin; l < end; ++l) f(tau_[offset_[l] + path[l]]);
+    });
   }
 
   /// The deposit part of eq. (2) for one ant, eq. (12).
-  void deposit(std::span<const std::uint32_t> path, double amount) {
-    update_path(path, [amount](double& t) { t += amount; });
+  void deposit(std::span<const std::uint32_t> path, double amount,
+               const ChunkedFor& parallel = {}) {
+    update_path(
+        path, [amount](double& t) { t += amount; }, parallel);
   }
 
   /// Mean lambda-branching factor (Gambardella & Dorigo 1995): per layer, the number of options

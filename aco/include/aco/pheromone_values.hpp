@@ -7,6 +7,8 @@
 #include <span>
 #include <vector>
 
+#include "aco/chunked_for.hpp"
+
 namespace antslam::aco {
 
 class PheromoneValues {
@@ -16,13 +18,17 @@ class PheromoneValues {
   void fill(double value) { std::fill(tau_.begin(), tau_.end(), value); }
 
   /// The evaporation part of eq. (2): tau <- (1 - rho) tau.
-  void evaporate(double rho) {
+  void evaporate(double rho, const ChunkedFor& parallel = {}) {
     const double keep = 1.0 - rho;
-    for (double& t : tau_) t *= keep;
+    parallel(tau_.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e) tau_[e] *= keep;
+    });
   }
 
-  void clamp(double lo, double hi) {
-    for (double& t : tau_) t = std::clamp(t, lo, hi);
+  void clamp(double lo, double hi, const ChunkedFor& parallel = {}) {
+    parallel(tau_.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e) tau_[e] = std::clamp(tau_[e], lo, hi);
+    });
   }
 
   double min_value() const { return *std::min_element(tau_.begin(), tau_.end()); }

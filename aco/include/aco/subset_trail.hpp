@@ -35,13 +35,17 @@ class SubsetTrail : public PheromoneValues {
 
   /// Calls f(tau) on the pheromone of every element of the set.
   template <class F>
-  void update_path(std::span<const std::uint32_t> subset, F&& f) {
-    for (const std::uint32_t e : subset) f(tau_[e]);
+  void update_path(std::span<const std::uint32_t> subset, F&& f, const ChunkedFor& parallel = {}) {
+    parallel(subset.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) f(tau_[subset[k]]);
+    });
   }
 
   /// The deposit part of eq. (2) for one ant.
-  void deposit(std::span<const std::uint32_t> subset, double amount) {
-    update_path(subset, [amount](double& t) { t += amount; });
+  void deposit(std::span<const std::uint32_t> subset, double amount,
+               const ChunkedFor& parallel = {}) {
+    update_path(
+        subset, [amount](double& t) { t += amount; }, parallel);
   }
 
   /// The lambda-branching factor (Gambardella & Dorigo 1995) of two-option decisions: an element

@@ -27,7 +27,8 @@ struct AcsUpdate {
   void apply(Trail& trail, const IterationView& v) const {
     const double amount = deposit_amount(rho, v.global_best.cost);
     const double keep = 1.0 - rho;
-    trail.update_path(v.global_best.path, [&](double& t) { t = keep * t + amount; });
+    const auto global_update = [&](double& t) { t = keep * t + amount; };
+    trail.update_path(v.global_best.path, global_update, v.parallel);
   }
 };
 

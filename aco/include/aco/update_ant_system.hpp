@@ -19,8 +19,9 @@ struct AntSystemUpdate {
   }
   template <class Trail>
   void apply(Trail& trail, const IterationView& v) const {
-    trail.evaporate(rho);
-    for (const Solution& ant : v.ants) trail.deposit(ant.path, deposit_amount(1.0, ant.cost));
+    trail.evaporate(rho, v.parallel);
+    for (const Solution& ant : v.ants)
+      trail.deposit(ant.path, deposit_amount(1.0, ant.cost), v.parallel);
   }
 };
 
@@ -36,9 +37,10 @@ struct ElitistUpdate {
   }
   template <class Trail>
   void apply(Trail& trail, const IterationView& v) const {
-    trail.evaporate(rho);
-    for (const Solution& ant : v.ants) trail.deposit(ant.path, deposit_amount(1.0, ant.cost));
-    trail.deposit(v.global_best.path, deposit_amount(elite_weight, v.global_best.cost));
+    trail.evaporate(rho, v.parallel);
+    for (const Solution& ant : v.ants)
+      trail.deposit(ant.path, deposit_amount(1.0, ant.cost), v.parallel);
+    trail.deposit(v.global_best.path, deposit_amount(elite_weight, v.global_best.cost), v.parallel);
   }
 };
 
@@ -55,14 +57,15 @@ struct RankUpdate {
   }
   template <class Trail>
   void apply(Trail& trail, const IterationView& v) const {
-    trail.evaporate(rho);
+    trail.evaporate(rho, v.parallel);
     const std::size_t ranked = std::min(width - 1, v.ranking.size());
     for (std::size_t r = 0; r < ranked; ++r) {
       const Solution& ant = v.ants[v.ranking[r]];
-      trail.deposit(ant.path, deposit_amount(static_cast<double>(width - 1 - r), ant.cost));
+      trail.deposit(ant.path, deposit_amount(static_cast<double>(width - 1 - r), ant.cost),
+                    v.parallel);
     }
     trail.deposit(v.global_best.path,
-                  deposit_amount(static_cast<double>(width), v.global_best.cost));
+                  deposit_amount(static_cast<double>(width), v.global_best.cost), v.parallel);
   }
 };
 

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 
+#include "aco/chunked_for.hpp"
 #include "aco/solution.hpp"
 
 namespace antslam::aco {
@@ -29,6 +30,7 @@ struct IterationView {
   const Solution& iteration_best;
   const Solution& global_best;
   std::uint64_t iteration = 0;  ///< number of iterations completed, this one included
+  ChunkedFor parallel = {};     ///< runs the trail's element-wise updates (chunked_for.hpp)
 };
 
 /// q / cost, guarded against a zero cost (eq. 3 and eq. 12).

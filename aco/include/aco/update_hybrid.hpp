@@ -31,15 +31,17 @@ struct HybridUpdate {
 
   template <class Trail>
   void apply(Trail& trail, const IterationView& v) const {
-    trail.evaporate(rho);
+    trail.evaporate(rho, v.parallel);
     // Algorithm 2 line 29: `iteration` has already been incremented (line 28).
     if (v.iteration % glob_best_freq != 0) {
-      for (const Solution& ant : v.ants) trail.deposit(ant.path, deposit_amount(deposit, ant.cost));
+      for (const Solution& ant : v.ants)
+        trail.deposit(ant.path, deposit_amount(deposit, ant.cost), v.parallel);
     } else {
-      trail.deposit(v.global_best.path, deposit_amount(deposit, v.global_best.cost));
-      trail.deposit(v.iteration_best.path, deposit_amount(deposit, v.iteration_best.cost));
+      trail.deposit(v.global_best.path, deposit_amount(deposit, v.global_best.cost), v.parallel);
+      trail.deposit(v.iteration_best.path, deposit_amount(deposit, v.iteration_best.cost),
+                    v.parallel);
     }
-    trail.clamp(0.0, tau_max);
+    trail.clamp(0.0, tau_max, v.parallel);
   }
 };
 

@@ -53,13 +53,13 @@ class MaxMinUpdate {
       set_bounds(bounds_cost_);
     }
 
-    trail.evaporate(s_.rho);
+    trail.evaporate(s_.rho, v.parallel);
     const Solution* depositor = &v.iteration_best;
     if (v.iteration % u_gb_ == 0)
       depositor =
           (u_gb_ == 1 && v.iteration - restart_found_best_ > 50) ? &v.global_best : &restart_best_;
-    trail.deposit(depositor->path, deposit_amount(1.0, depositor->cost));
-    trail.clamp(tau_min_, tau_max_);
+    trail.deposit(depositor->path, deposit_amount(1.0, depositor->cost), v.parallel);
+    trail.clamp(tau_min_, tau_max_, v.parallel);
 
     update_schedule(v.iteration);
     if (s_.reinitialize && v.iteration % s_.check_every == 0 &&
