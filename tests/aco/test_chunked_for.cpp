@@ -37,11 +37,12 @@ struct Coverage {
   std::vector<std::atomic<int>> seen;
   std::atomic<int> calls{0};
   explicit Coverage(std::size_t count) : seen(count) {}
-  void run(const ChunkedFor& parallel) {
-    parallel(seen.size(), [&](std::size_t begin, std::size_t end) {
+  void run(const ChunkedFor& parallel, std::size_t min_chunk = ChunkedFor::kMinChunk) {
+    const auto body = [&](std::size_t begin, std::size_t end) {
       ++calls;
       for (std::size_t i = begin; i < end; ++i) ++seen[i];
-    });
+    };
+    parallel(seen.size(), body, min_chunk);
   }
   bool every_index_once() const {
     return std::all_of(seen.begin(), seen.end(), [](const std::atomic<int>& s) { return s == 1; });
@@ -58,6 +59,10 @@ TEST(ChunkedFor, CoversEveryIndexOnceAndSplitsOnlyLargeRanges) {
       EXPECT_TRUE(coverage.every_index_once()) << count;
       EXPECT_EQ(coverage.calls, count < 2 * ChunkedFor::kMinChunk ? 1 : 5) << count;
     }
+    Coverage searches(3 * ChunkedFor::kMinSearchChunk + 1);  // a tour's deposit: shorter chunks
+    searches.run(parallel, ChunkedFor::kMinSearchChunk);
+    EXPECT_TRUE(searches.every_index_once());
+    EXPECT_EQ(searches.calls, 3);
   }
 }
 

@@ -18,6 +18,9 @@ class ChunkedFor {
   /// Ranges shorter than two chunks of this many entries run on the calling thread: a fork-join
   /// costs a few microseconds, a chunk of this size a few more.
   static constexpr std::size_t kMinChunk = 16384;
+  /// The same for ranges whose every index costs a search (the candidate-list lookups of a tour's
+  /// deposit, tens of nanoseconds each).
+  static constexpr std::size_t kMinSearchChunk = 1024;
 
   /// Runs every range on the calling thread.
   ChunkedFor() = default;
@@ -31,10 +34,10 @@ class ChunkedFor {
         }) {}
 
   /// Calls body(begin, end) once for each of disjoint ranges that cover [0, count) (in any order,
-  /// possibly at the same time).
+  /// possibly at the same time), each at least min_chunk long.
   template <class Body>
-  void operator()(std::size_t count, Body&& body) const {
-    const std::size_t chunks = threads_ < 2 ? 1 : std::min(4 * threads_, count / kMinChunk);
+  void operator()(std::size_t count, Body&& body, std::size_t min_chunk = kMinChunk) const {
+    const std::size_t chunks = threads_ < 2 ? 1 : std::min(4 * threads_, count / min_chunk);
     if (chunks < 2) {
       body(std::size_t{0}, count);
       return;

@@ -85,16 +85,17 @@ class EdgeTrail : public PheromoneValues {
   /// once, so its edges are distinct and chunks of it touch disjoint entries.
   template <class F>
   void update_path(std::span<const std::uint32_t> tour, F&& f, const ChunkedFor& parallel = {}) {
-    parallel(tour.size(), [&](std::size_t begin, std::size_t end) {
+    const auto edges = [&](std::size_t begin, std::size_t end) {
       for (std::size_t s = begin; s < end; ++s)
         update_edge(tour[s], tour[s + 1 == tour.size() ? 0 : s + 1], f);
-    });
+    };
+    parallel(tour.size(), edges, ChunkedFor::kMinSearchChunk);
   }
 
   void deposit(std::span<const std::uint32_t> tour, double amount,
                const ChunkedFor& parallel = {}) {
-    update_path(
-        tour, [amount](double& t) { t += amount; }, parallel);
+    const auto add = [amount](double& t) { t += amount; };
+    update_path(tour, add, parallel);
   }
 
   /// Mean lambda-branching factor over the candidate lists (as ACOTSP's node_branching).

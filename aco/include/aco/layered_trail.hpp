@@ -57,8 +57,8 @@ class LayeredTrail : public PheromoneValues {
   /// The deposit part of eq. (2) for one ant, eq. (12).
   void deposit(std::span<const std::uint32_t> path, double amount,
                const ChunkedFor& parallel = {}) {
-    update_path(
-        path, [amount](double& t) { t += amount; }, parallel);
+    const auto add = [amount](double& t) { t += amount; };
+    update_path(path, add, parallel);
   }
 
   /// Mean lambda-branching factor (Gambardella & Dorigo 1995): per layer, the number of options

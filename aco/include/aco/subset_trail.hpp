@@ -44,8 +44,8 @@ class SubsetTrail : public PheromoneValues {
   /// The deposit part of eq. (2) for one ant.
   void deposit(std::span<const std::uint32_t> subset, double amount,
                const ChunkedFor& parallel = {}) {
-    update_path(
-        subset, [amount](double& t) { t += amount; }, parallel);
+    const auto add = [amount](double& t) { t += amount; };
+    update_path(subset, add, parallel);
   }
 
   /// The lambda-branching factor (Gambardella & Dorigo 1995) of two-option decisions: an element
