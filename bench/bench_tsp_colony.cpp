@@ -32,20 +32,30 @@ const tsp::TspProblem& uniform_problem(std::size_t n) {
   return *slot;
 }
 
-/// Arguments: cities, threads.
-void BM_ColonyStep(benchmark::State& state) {
+/// The default colony on state's instance (range 0: cities) and backend (range 1: threads),
+/// after 20 untimed iterations; then body(colony, backend).
+template <class Body>
+void with_warm_colony(benchmark::State& state, Body&& body) {
   const tsp::TspProblem& p = uniform_problem(static_cast<std::size_t>(state.range(0)));
   const auto threads = static_cast<std::size_t>(state.range(1));
   const tsp::SolverSettings settings;
   const aco::Parameters parameters = tsp::resolved_parameters(p, settings);
-  aco::with_colony(p, parameters, aco::make_backend(aco::BackendKind::automatic, threads),
-                   tsp::TourLocalSearch(settings.local_search), [&](auto& colony) {
+  aco::AnyBackend backend = aco::make_backend(aco::BackendKind::automatic, threads);
+  aco::with_colony(p, parameters, backend, tsp::TourLocalSearch(settings.local_search),
+                   [&](auto& colony) {
                      for (int warm = 0; warm < 20; ++warm) colony.step();
-                     for (auto _ : state) colony.step();
-                     state.counters["best"] = colony.best().cost;
+                     body(colony, backend);
                      return 0;
                    });
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
+/// Arguments: cities, threads.
+void BM_ColonyStep(benchmark::State& state) {
+  with_warm_colony(state, [&](auto& colony, aco::AnyBackend&) {
+    for (auto _ : state) colony.step();
+    state.counters["best"] = colony.best().cost;
+  });
 }
 BENCHMARK(BM_ColonyStep)
     ->ArgsProduct({{15000}, {1, 2}})
@@ -58,27 +68,18 @@ BENCHMARK(BM_ColonyStep)
 /// limits) on the colony's trail after 20 iterations, its entries split over the backend's
 /// threads (aco/chunked_for.hpp). Arguments: cities, threads.
 void BM_MaxMinTrailUpdate(benchmark::State& state) {
-  const tsp::TspProblem& p = uniform_problem(static_cast<std::size_t>(state.range(0)));
-  const auto threads = static_cast<std::size_t>(state.range(1));
-  const tsp::SolverSettings settings;
-  const aco::Parameters parameters = tsp::resolved_parameters(p, settings);
-  aco::AnyBackend backend = aco::make_backend(aco::BackendKind::automatic, threads);
-  const aco::ChunkedFor parallel(backend);
-  aco::with_colony(p, parameters, backend, tsp::TourLocalSearch(settings.local_search),
-                   [&](auto& colony) {
-                     for (int warm = 0; warm < 20; ++warm) colony.step();
-                     auto trail = colony.trail();
-                     const aco::Solution& best = colony.best();
-                     const double tau_max = trail.max_value();
-                     for (auto _ : state) {
-                       trail.evaporate(0.2, parallel);
-                       trail.deposit(best.path, 1.0 / best.cost, parallel);
-                       trail.clamp(tau_max / 1000.0, tau_max, parallel);
-                     }
-                     benchmark::DoNotOptimize(trail.values().data());
-                     return 0;
-                   });
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  with_warm_colony(state, [&](auto& colony, aco::AnyBackend& backend) {
+    const aco::ChunkedFor parallel(backend);
+    auto trail = colony.trail();
+    const aco::Solution& best = colony.best();
+    const double tau_max = trail.max_value();
+    for (auto _ : state) {
+      trail.evaporate(0.2, parallel);
+      trail.deposit(best.path, 1.0 / best.cost, parallel);
+      trail.clamp(tau_max / 1000.0, tau_max, parallel);
+    }
+    benchmark::DoNotOptimize(trail.values().data());
+  });
 }
 BENCHMARK(BM_MaxMinTrailUpdate)
     ->ArgsProduct({{15000}, {1, 2}})

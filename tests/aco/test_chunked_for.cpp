@@ -83,11 +83,9 @@ EdgeTrail ring_trail(std::uint32_t n) {
   for (std::uint32_t i = 0; i < n; ++i)
     for (const std::uint32_t d : {1U, n - 1, 2U, n - 2}) neighbours.push_back((i + d) % n);
   EdgeTrail trail(n, 4, std::move(neighbours));
-  std::vector<double> start(trail.values().size());
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.5, 2.0);
-  trail.fill(1.0);
-  for (std::uint32_t i = 0; i < n; ++i)  // unequal values, equal copies
+  for (std::uint32_t i = 0; i < n; ++i)  // every entry: unequal values, equal copies
     for (const std::uint32_t j : trail.neighbours(i)) {
       const double v = u(rng);
       trail.update_edge(i, j, [v](double& t) { t = v; });
