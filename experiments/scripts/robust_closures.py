@@ -47,7 +47,12 @@ def options():
     p.add_argument("--collect", action="store_true",
                    help="run nothing: tabulate and plot the runs in OUT/runs (a grid gathered "
                         "from several calls; cases without a run are left out)")
+    p.add_argument("--earlier", metavar="CSV",
+                   help="rows of an earlier robust.csv (such as docs/figures/results-robust.csv) "
+                        "to tabulate with this call's runs; a case run here replaces its row")
     args = p.parse_args()
+    if args.earlier:
+        args.earlier_rows = earlier_rows(p, args.earlier)
     defaults = QUICK if args.quick else FULL
     for name, value in defaults.items():
         if getattr(args, name) is None:
@@ -56,6 +61,29 @@ def options():
         if not os.path.exists(os.path.join(DATA, "posegraphs", graph + ".g2o")):
             p.error(f"--graphs: unknown {graph} (none of data/posegraphs/*.g2o)")
     return args
+
+
+def earlier_rows(p, path):
+    """The rows of an earlier robust.csv, as lists in COLUMNS order (a parser error if it is
+    missing or has other columns)."""
+    if not os.path.isfile(path):
+        p.error(f"--earlier: {path}: no such file")
+    with open(path) as f:
+        columns = f.readline().strip().split(",")
+    if columns != COLUMNS:
+        p.error(f"--earlier: {path}: line 1: expected the columns {','.join(COLUMNS)}")
+    return [[r[c] for c in COLUMNS] for r in read_csv(path)]
+
+
+def with_earlier(args, rows):
+    """This call's rows after the earlier rows (--earlier) of the cases it did not run."""
+    if not args.earlier:
+        return rows
+    def case(row):  # graph, kind, count, seed, method
+        return tuple(str(v) for v in row[:5])
+
+    run_here = {case(r) for r in rows}
+    return [r for r in args.earlier_rows if case(r) not in run_here] + rows
 
 
 def spoil(args, graph, kind, count, seed):
@@ -233,7 +261,7 @@ def main():
                                   references[graph], truth))
         progress(f"seed {seed}: {len(cases)} spoiled graphs x {len(args.methods)} methods")
         rows += run_cases(args, cases)
-        save_csv(args, "robust", COLUMNS, rows)
+        save_csv(args, "robust", COLUMNS, with_earlier(args, rows))
     rows = read_csv(os.path.join(args.out, "robust.csv"))
     summarize(args, rows)
     plot(args, rows)
