@@ -13,6 +13,7 @@ Writes OUT/robust.csv (one row per run), OUT/table.md (means over the seeds) and
 graph, OUT/robust-GRAPH.png: precision, recall and ATE against the outlier count, one column per
 kind, one line per method.
 """
+import csv
 import os
 
 from experiment_common import (DATA, antslam, check_program, count_option, header,
@@ -69,21 +70,23 @@ def earlier_rows(p, path):
     if not os.path.isfile(path):
         p.error(f"--earlier: {path}: no such file")
     with open(path) as f:
-        columns = f.readline().strip().split(",")
-    if columns != COLUMNS:
-        p.error(f"--earlier: {path}: line 1: expected the columns {','.join(COLUMNS)}")
-    return [[r[c] for c in COLUMNS] for r in read_csv(path)]
+        reader = csv.reader(f)
+        if next(reader, None) != COLUMNS:
+            p.error(f"--earlier: {path}: line 1: expected the columns {','.join(COLUMNS)}")
+        return list(reader)
+
+
+def case_of(row):
+    """The case a row (in COLUMNS order) belongs to: graph, kind, count, seed and method."""
+    return tuple(str(v) for v in row[:5])
 
 
 def with_earlier(args, rows):
     """This call's rows after the earlier rows (--earlier) of the cases it did not run."""
     if not args.earlier:
         return rows
-    def case(row):  # graph, kind, count, seed, method
-        return tuple(str(v) for v in row[:5])
-
-    run_here = {case(r) for r in rows}
-    return [r for r in args.earlier_rows if case(r) not in run_here] + rows
+    run_here = {case_of(r) for r in rows}
+    return [r for r in args.earlier_rows if case_of(r) not in run_here] + rows
 
 
 def spoil(args, graph, kind, count, seed):
