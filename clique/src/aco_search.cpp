@@ -30,8 +30,9 @@ AcoSearchResult maximum_clique_aco(const Graph& graph, const AcoSearchSettings& 
     return aco::solve(problem, settings.parameters, termination,
                       aco::make_backend(settings.backend, settings.threads), local_search);
   };
-  const aco::RunResult run =
-      settings.local_search ? solve(SwapLocalSearch{}) : solve(aco::NoLocalSearch{});
+  const aco::RunResult run = settings.local_search
+                                 ? solve(SwapLocalSearch{.plateau_steps = settings.plateau_steps})
+                                 : solve(aco::NoLocalSearch{});
 
   AcoSearchResult result;
   result.iterations = run.iterations;

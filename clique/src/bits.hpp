@@ -16,6 +16,11 @@ inline std::size_t word_count(std::size_t bits) { return (bits + 63) / 64; }
 inline void set_bit(std::span<std::uint64_t> bits, std::uint32_t v) {
   bits[v >> 6U] |= std::uint64_t{1} << (v & 63U);
 }
+
+inline bool test_bit(std::span<const std::uint64_t> bits, std::uint32_t v) {
+  return ((bits[v >> 6U] >> (v & 63U)) & 1U) != 0;
+}
+
 inline void clear_bit(std::span<std::uint64_t> bits, std::uint32_t v) {
   bits[v >> 6U] &= ~(std::uint64_t{1} << (v & 63U));
 }

@@ -96,6 +96,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
         {"aco_seed", o.s.aco.parameters.seed},
         {"aco_max_iterations", o.s.aco.termination.max_iterations},
         {"aco_stagnation_iterations", o.s.aco.termination.stagnation_iterations},
+        {"aco_plateau_steps", o.s.aco.plateau_steps},
         {"backend", o.backend},
         {"threads", o.s.threads}}}};
   if (sc) {
@@ -228,6 +229,10 @@ void add_robust_command(CLI::App& app) {
   cmd->add_option("--iterations", o->s.aco.termination.max_iterations,
                   "pcm-aco: iterations at most")
       ->check(count_in(1, kMaxIterations))
+      ->capture_default_str();
+  cmd->add_option("--plateau-steps", o->s.aco.plateau_steps,
+                  "pcm-aco: plateau moves after each ant's (1,2)-swaps (0 = none)")
+      ->check(count_in(0, kMaxIterations))
       ->capture_default_str();
   cmd->add_option("--seed", o->s.aco.parameters.seed, "pcm-aco: seed of the ants")
       ->check(non_negative_integer())

@@ -1,5 +1,5 @@
 """antslam from Python: the ant colony engine, the TSP, AntSLAM fragment sets and pose graphs,
-the mapping pipeline and trajectory evaluation, with numpy arrays in and out.
+the mapping pipeline, trajectory evaluation and maximum cliques, with numpy arrays in and out.
 
     import antslam
     instance = antslam.tsp.read("data/tsplib/eil51.tsp")
@@ -11,7 +11,7 @@ ValueError or RuntimeError with the same one-line message as the antslam program
 the same result as the program with the same options. docs/python.md has a worked example.
 """
 from . import _core
-from . import aco, eval, mapping, slam, tsp
+from . import aco, clique, eval, mapping, slam, tsp
 
 __version__ = _core.__version__
-__all__ = ["aco", "eval", "mapping", "slam", "tsp"]
+__all__ = ["aco", "clique", "eval", "mapping", "slam", "tsp"]

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "aco/backend_kind.hpp"
+
 namespace antslam::python {
 
 namespace py = pybind11;
@@ -17,9 +19,13 @@ void bind_slam_data(py::module_& slam);      ///< slam_data_bindings.cpp: sets a
 void bind_slam_optimize(py::module_& slam);  ///< slam_optimize_bindings.cpp
 void bind_mapping(py::module_& mapping);     ///< mapping_bindings.cpp: the pipeline
 void bind_eval(py::module_& eval);           ///< eval_bindings.cpp
+void bind_clique(py::module_& clique);       ///< clique_bindings.cpp: maximum cliques
 
 /// "NAME: unknown 'VALUE' (expected one of A, B, C)".
 [[noreturn]] void unknown_name(const char* name, const std::string& value,
                                const std::string& expected);
+
+/// The backend of that name (auto, serial, omp, tbb); unknown_name otherwise.
+aco::BackendKind backend_from(const std::string& name);
 
 }  // namespace antslam::python

@@ -44,19 +44,13 @@ TableProblem::Term python_term(const py::object& term, PythonThread& python) {
   };
 }
 
-aco::BackendKind backend_named(const std::string& name) {
-  const auto kind = aco::parse_backend(name);
-  if (!kind) unknown_name("backend", name, aco::backend_names());
-  return *kind;
-}
-
 aco::RunResult solve_layered(const std::vector<DoubleArray>& costs,
                              const std::vector<DoubleArray>& pairwise,
                              const std::vector<DoubleArray>& heuristic, const py::object& term,
                              const aco::Parameters& parameters, const aco::Termination& termination,
                              const std::string& backend, std::size_t threads,
                              const py::object& observer) {
-  const aco::BackendKind kind = aco::resolve(backend_named(backend), threads);
+  const aco::BackendKind kind = aco::resolve(backend_from(backend), threads);
   std::vector<std::vector<double>> unary = rows(costs), pairs = rows(pairwise),
                                    eta = rows(heuristic);
   return run_interruptible([&](PythonThread& python) {

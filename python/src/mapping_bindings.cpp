@@ -123,9 +123,7 @@ void bind_settings(py::module_& m) {
           "backend",
           [](const mapping::MappingSettings& s) { return std::string(aco::to_string(s.backend)); },
           [](mapping::MappingSettings& s, const std::string& name) {
-            const auto kind = aco::parse_backend(name);
-            if (!kind) unknown_name("backend", name, aco::backend_names());
-            s.backend = *kind;
+            s.backend = backend_from(name);
           });
   py::class_<mapping::PipelineSettings>(m, "PipelineSettings", "mapping/pipeline.hpp")
       .def(py::init<>())

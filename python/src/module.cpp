@@ -14,6 +14,12 @@ void unknown_name(const char* name, const std::string& value, const std::string&
                               expected + ")");
 }
 
+aco::BackendKind backend_from(const std::string& name) {
+  const auto kind = aco::parse_backend(name);
+  if (!kind) unknown_name("backend", name, aco::backend_names());
+  return *kind;
+}
+
 }  // namespace antslam::python
 
 PYBIND11_MODULE(_core, m) {
@@ -32,4 +38,6 @@ PYBIND11_MODULE(_core, m) {
   bind_mapping(mapping);
   py::module_ eval = m.def_submodule("eval", "Trajectory evaluation: ATE, RPE, relations");
   bind_eval(eval);
+  py::module_ clique = m.def_submodule("clique", "Maximum cliques: the ants, branch and bound");
+  bind_clique(clique);
 }

@@ -114,9 +114,7 @@ void bind_settings(py::module_& m) {
           "backend",
           [](const slam::OptimizeSettings& s) { return std::string(aco::to_string(s.backend)); },
           [](slam::OptimizeSettings& s, const std::string& name) {
-            const auto kind = aco::parse_backend(name);
-            if (!kind) unknown_name("backend", name, aco::backend_names());
-            s.backend = *kind;
+            s.backend = backend_from(name);
           })
       .def_readwrite("aco", &slam::OptimizeSettings::aco)
       .def_readwrite("refine", &slam::OptimizeSettings::refine)

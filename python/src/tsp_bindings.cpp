@@ -177,11 +177,7 @@ void bind_tsp(py::module_& m) {
       .def_property(
           "backend",
           [](const tsp::SolverSettings& s) { return std::string(aco::to_string(s.backend)); },
-          [](tsp::SolverSettings& s, const std::string& name) {
-            const auto kind = aco::parse_backend(name);
-            if (!kind) unknown_name("backend", name, aco::backend_names());
-            s.backend = *kind;
-          });
+          [](tsp::SolverSettings& s, const std::string& name) { s.backend = backend_from(name); });
 
   m.def("solve_settings", &solve, py::arg("instance"), py::arg("settings"),
         py::arg("problem_settings"), py::arg("termination"), py::arg("observer"),

@@ -212,6 +212,62 @@ TEST(LocalSearch, NeverLighterAlwaysMaximalOnRandomGraphs) {
   }
 }
 
+// Clique {0, 1, 2} is maximal and no (1,2)-swap applies: 3 is the only 1-tight vertex (it misses
+// 2), and 4 and 5 miss both 1 and 2. The plateau move 2 -> 3 makes 4 and 5 1-tight with the
+// same missed member 1, and the (1,2)-swap then gives {0, 3, 4, 5}.
+Graph plateau_graph(std::vector<double> weights) {
+  const std::vector<Edge> edges{{0, 1}, {0, 2}, {1, 2}, {0, 3}, {1, 3},
+                                {0, 4}, {3, 4}, {0, 5}, {3, 5}, {4, 5}};
+  return Graph(6, edges, std::move(weights));
+}
+
+std::vector<std::uint32_t> improved(const Graph& g, std::vector<std::uint32_t> clique,
+                                    std::size_t plateau_steps) {
+  const CliqueProblem p(g);
+  const SwapLocalSearch ls{.plateau_steps = plateau_steps};
+  SwapLocalSearch::Workspace ws = ls.make_workspace(p);
+  aco::Rng rng(1);
+  ls.improve(p, clique, ws, rng, {});
+  std::sort(clique.begin(), clique.end());
+  return clique;
+}
+
+TEST(LocalSearch, PlateauWalkReachesWhatSwapsCannot) {
+  const Graph g = plateau_graph({});
+  EXPECT_EQ(improved(g, {0, 1, 2}, 0), (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(improved(g, {0, 1, 2}, 1), (std::vector<std::uint32_t>{0, 3, 4, 5}));
+}
+
+TEST(LocalSearch, PlateauWalkNeverTakesALighterVertex) {
+  // 3 is lighter than the 2 it would replace: no plateau move, although {0, 3, 4, 5} weighs 3.5.
+  const Graph g = plateau_graph({1, 1, 1, 0.5, 1, 1});
+  EXPECT_EQ(improved(g, {0, 1, 2}, 10), (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(LocalSearch, PlateauWalkThatGainsNothingChangesNothing) {
+  // Two triangles on the edge 0-1: the walk goes to {0, 1, 3}, gains nothing, and the clique
+  // it started from is kept.
+  const Graph g(4, std::vector<Edge>{{0, 1}, {0, 2}, {1, 2}, {0, 3}, {1, 3}});
+  EXPECT_EQ(improved(g, {0, 1, 2}, 5), (std::vector<std::uint32_t>{0, 1, 2}));
+  EXPECT_EQ(improved(g, {0, 1, 3}, 5), (std::vector<std::uint32_t>{0, 1, 3}));
+}
+
+TEST(LocalSearch, PlateauWalkNeverLighterThanTheSwapsAlone) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Graph g = random_graph(60, 0.7, seed, 3);
+    std::vector<std::uint32_t> start{static_cast<std::uint32_t>(seed)};  // grown to maximal
+    for (std::uint32_t v = 0; v < g.size(); ++v)
+      if (v != start.front() && std::all_of(start.begin(), start.end(),
+                                            [&](std::uint32_t c) { return g.adjacent(c, v); }))
+        start.push_back(v);
+    const std::vector<std::uint32_t> swaps = improved(g, start, 0);
+    const std::vector<std::uint32_t> walked = improved(g, start, 50);
+    EXPECT_TRUE(is_maximal_clique(g, walked));
+    EXPECT_GE(weight_of(g, walked), weight_of(g, swaps));
+    EXPECT_EQ(improved(g, start, 50), walked);  // deterministic
+  }
+}
+
 TEST(Problem, CostAndHeuristic) {
   const Graph g(4, std::vector<Edge>{{0, 1}, {1, 2}}, {1.0, 2.0, 3.0, 4.0});
   const CliqueProblem p(g);

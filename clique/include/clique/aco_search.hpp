@@ -1,8 +1,8 @@
 #pragma once
 // Maximum clique by the ant colony engine: any variant of aco::kVariants on any backend, on
-// CliqueProblem, each ant's clique improved by (1,2)-swaps (local_search.hpp) unless switched
-// off. The run stops at its termination criteria or as soon as a clique reaches the colouring
-// bound (then it is proven maximum).
+// CliqueProblem, each ant's clique improved by (1,2)-swaps (and, if asked, a plateau walk;
+// local_search.hpp) unless switched off. The run stops at its termination criteria or as soon
+// as a clique reaches the colouring bound (then it is proven maximum).
 
 #include <cstddef>
 #include <cstdint>
@@ -19,7 +19,8 @@ struct AcoSearchSettings {
   aco::Termination termination = {.max_iterations = 100, .stagnation_iterations = 20};
   ///< iterations (count), wall-clock budget (s), stagnation (iterations); the colouring bound is
   ///< always the target
-  bool local_search = true;                                ///< (1,2)-swaps on every ant's clique
+  bool local_search = true;       ///< (1,2)-swaps on every ant's clique
+  std::size_t plateau_steps = 0;  ///< then a plateau walk of at most this many moves; 0 = none
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< backend running the ants
   std::size_t threads = 1;                                 ///< its threads; 0 = all cores
 
