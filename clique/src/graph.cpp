@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -11,6 +14,22 @@ namespace antslam::clique {
 
 Graph::Graph(std::size_t vertices, std::span<const Edge> edges, std::vector<double> weights)
     : n_(vertices), words_(detail::word_count(vertices)), weight_(std::move(weights)) {
+  if (n_ > std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("clique graph: " + std::to_string(n_) +
+                            " vertices (at most 4294967295)");
+  // n^2 bits: a million vertices need 125 GB.
+  const auto too_large = [&] {
+    const double megabytes = static_cast<double>(n_) * static_cast<double>(words_) * 8e-6;
+    return std::length_error("clique graph: the adjacency bits of " + std::to_string(n_) +
+                             " vertices (" + std::to_string(std::llround(megabytes)) +
+                             " MB) do not fit in memory");
+  };
+  if (words_ != 0 && n_ > bits_.max_size() / words_) throw too_large();
+  try {
+    bits_.assign(n_ * words_, 0);
+  } catch (const std::bad_alloc&) {
+    throw too_large();
+  }
   if (weight_.empty()) weight_.assign(n_, 1.0);
   if (weight_.size() != n_)
     throw std::invalid_argument("clique graph: " + std::to_string(weight_.size()) +
@@ -22,7 +41,6 @@ Graph::Graph(std::size_t vertices, std::span<const Edge> edges, std::vector<doub
     total_weight_ += weight_[v];
     unit_weights_ = unit_weights_ && weight_[v] == 1.0;
   }
-  bits_.assign(n_ * words_, 0);
   for (const auto& [i, j] : edges) {
     if (i >= n_ || j >= n_)
       throw std::invalid_argument("clique graph: edge " + std::to_string(i) + "-" +

@@ -21,6 +21,9 @@ class Graph(_core.clique.Graph):
     pairs, weights positive (default: 1 each, the maximum clique by cardinality)."""
 
     def __init__(self, vertices, edges, weights=None):
+        if isinstance(vertices, bool) or not isinstance(vertices, (int, np.integer)) \
+                or vertices < 0:
+            raise ValueError(f"vertices: expected a count >= 0, got {vertices!r}")
         pairs = np.asarray(edges)
         if pairs.size == 0:
             pairs = np.zeros((0, 2), dtype=np.int64)

@@ -153,6 +153,10 @@ TEST(Aco, StopsAtTheColouringBound) {
   EXPECT_EQ(r.iterations, 1U);
 }
 
+TEST(Graph, RejectsMoreVerticesThanItsIndicesHold) {
+  EXPECT_THROW(Graph(std::size_t{1} << 32U, {}), std::length_error);  // no allocation tried
+}
+
 TEST(Aco, RejectsAnUnboundedRunAndAnEmptyGraph) {
   AcoSearchSettings s;
   s.termination = {};

@@ -82,6 +82,22 @@ def test_bad_graphs_are_one_line_errors(vertices, edges, weights, message):
         antslam.clique.Graph(vertices, edges, weights)
 
 
+@pytest.mark.parametrize("vertices", [-1, 3.5, "3", True])
+def test_a_bad_vertex_count_is_one_line(vertices):
+    with pytest.raises(ValueError, match=r"vertices: expected a count >= 0, got"):
+        antslam.clique.Graph(vertices, [])
+
+
+def test_a_graph_too_large_is_one_line():
+    # 2^31 vertices: 2^59 bytes (576,460,752,303.4 MB) of adjacency bits, beyond any address space.
+    with pytest.raises(ValueError, match=r"clique graph: the adjacency bits of 2147483648 "
+                                         r"vertices \(576460752303 MB\) do not fit in memory"):
+        antslam.clique.Graph(2**31, [])
+    with pytest.raises(ValueError, match=r"clique graph: 1099511627776 vertices \(at most "
+                                         r"4294967295\)"):
+        antslam.clique.Graph(2**40, [])
+
+
 def test_bad_options_are_one_line_errors():
     g = antslam.clique.Graph(3, [(0, 1)])
     with pytest.raises(TypeError, match="unexpected keyword argument 'plateau'"):
