@@ -195,9 +195,26 @@ TEST(Parameters, NonsenseIsRefusedByName) {
   EXPECT_EQ(error_of([](Parameters&) {}), "no error");
 }
 
-TEST(Termination, RejectsAnUnboundedRun) {
+TEST(Termination, RejectsAnUnboundedRunAndNonsenseBudgets) {
   const SyntheticLayeredProblem problem(3, 3, 1);
-  EXPECT_THROW(solve(problem, Parameters{}, Termination{}), std::invalid_argument);
+  const auto error_of = [&](Termination t) -> std::string {
+    try {
+      solve(problem, Parameters{}, t);
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(error_of({}), "termination: set iterations, a time budget, a target or stagnation");
+  const std::string time = "termination: the time limit must be a finite number of seconds >= 0";
+  const std::string cpu = "termination: the CPU-time limit must be a finite number of seconds >= 0";
+  for (const double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_EQ(error_of({.max_iterations = 2, .time_limit_s = bad}), time + " (0: none)");
+    EXPECT_EQ(error_of({.max_iterations = 2, .cpu_time_limit_s = bad}), cpu + " (0: none)");
+  }
+  EXPECT_EQ(error_of({.max_iterations = 2, .target_cost = std::nan("")}),
+            "termination: the target is NaN");
+  EXPECT_EQ(error_of({.max_iterations = 2, .time_limit_s = 0.0}), "no error");
 }
 
 }  // namespace

@@ -108,5 +108,9 @@ def test_bad_options_are_one_line_errors():
         antslam.clique.aco(g, variant="bees")
     with pytest.raises(ValueError, match="set iterations, a time budget or stagnation"):
         antslam.clique.aco(g, iterations=0, stagnation=0)
+    with pytest.raises(ValueError, match="termination: the time limit must be a finite number"):
+        antslam.clique.aco(g, time_limit=float("nan"))
+    with pytest.raises(ValueError, match="exact clique search: time limit must be a finite"):
+        antslam.clique.exact(g, time_limit=-1)
     with pytest.raises(ValueError, match="the graph is empty"):
         antslam.clique.aco(antslam.clique.Graph(0, []))

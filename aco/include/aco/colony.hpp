@@ -213,9 +213,7 @@ class Colony {
   /// Runs from fresh trails until a termination criterion holds. Time budgets count from this
   /// call: building the colony (the heuristic values, the trails' initial values) comes before.
   RunResult run(const Termination& termination, const Observer& observer = {}) {
-    if (!termination.bounded())
-      throw std::invalid_argument(
-          "termination: set iterations, a time budget, a target or stagnation");
+    validate(termination);
     // The trails were initialised when the colony was built (a nearest-neighbour tour of a
     // million cities takes about a second); a colony that has run before starts again from fresh
     // ones. The budget counts from here, after that preprocessing.

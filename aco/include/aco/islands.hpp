@@ -119,9 +119,7 @@ inline void check(const IslandSettings& s, const Termination& termination) {
   if (s.exchange_every == 0) throw std::invalid_argument("islands: exchange_every must be >= 1");
   if (s.first >= s.colonies || s.first + s.local > s.colonies)
     throw std::invalid_argument("islands: this process's colonies lie outside 0 .. K-1");
-  if (!termination.bounded())
-    throw std::invalid_argument(
-        "termination: set iterations, a time budget, a target or stagnation");
+  validate(termination);
 }
 
 /// 1 + the reason this process's clocks (or a stop request) end the run, else 0.

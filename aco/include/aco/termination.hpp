@@ -3,9 +3,11 @@
 // iteration when a budget runs out.
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <ctime>
 #include <limits>
+#include <stdexcept>
 #include <stop_token>
 #include <string_view>
 #include <utility>
@@ -28,6 +30,22 @@ struct Termination {
            target_cost > -std::numeric_limits<double>::infinity() || stagnation_iterations > 0;
   }
 };
+
+/// Throws std::invalid_argument "termination: ..." for a time or CPU-time limit that is not a
+/// finite number >= 0, a target that is not a number, or a run without any bound.
+inline void validate(const Termination& t) {
+  const auto budget = [](double s) { return std::isfinite(s) && s >= 0.0; };
+  if (!budget(t.time_limit_s))
+    throw std::invalid_argument(
+        "termination: the time limit must be a finite number of seconds >= 0 (0: none)");
+  if (!budget(t.cpu_time_limit_s))
+    throw std::invalid_argument(
+        "termination: the CPU-time limit must be a finite number of seconds >= 0 (0: none)");
+  if (std::isnan(t.target_cost)) throw std::invalid_argument("termination: the target is NaN");
+  if (!t.bounded())
+    throw std::invalid_argument(
+        "termination: set iterations, a time budget, a target or stagnation");
+}
 
 enum class StopReason { iterations, time, cpu_time, target, stagnation, interrupted };
 
