@@ -7,6 +7,9 @@
     g = antslam.slam.read_graph("data/posegraphs/intel.g2o")   # g2o or TORO, FIX lines kept
     r = antslam.slam.optimize(g, method="ceres")         # r.frames: the vertex poses
 
+    spoiled, false = antslam.slam.add_outliers(g, 1000, kind="random", seed=1)
+    r = antslam.slam.robust(spoiled, "pcm-aco")          # r.accepted: per loop closure
+
 Methods: as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, random,
 exhaustive. On a pose graph ceres, ceres-robust and nlopt run on the graph itself (from its
 vertex poses, fixed vertices held); the others on its fragment chain (docs/slamgraph.md).
@@ -143,3 +146,41 @@ relative_alignments = _core.slam.relative_alignments
 read_reference_poses = _core.slam.read_reference_poses
 graph_of_set = _core.slam.graph_of_set
 trial_seed = _core.slam.trial_seed
+
+
+# False loop closures and the robust back ends (`antslam outliers`, `antslam robust`).
+RobustResult = _core.slam.RobustResult
+ROBUST_METHODS = ("ls", "cauchy", "dcs", "gnc", "pcm-exact", "pcm-aco")
+_OUTLIERS = {"group_size": "group_size", "local_window": "local_window"}
+_ROBUST = dict(
+    {name: "aco.parameters." + attribute for name, attribute in _options.ENGINE.items()},
+    confidence="inlier_confidence", cauchy_scale="cauchy_scale", dcs_phi="dcs_phi",
+    check_clique="check_clique", exact_time_limit="exact_time_limit_s",
+    iterations="aco.termination.max_iterations", plateau_steps="aco.plateau_steps",
+    backend="backend", threads="threads")
+
+
+def add_outliers(graph, count, kind="random", seed=1, **options):
+    """The graph with `count` false loop closures appended after its own edges (kind: random,
+    local, random-group, local-group; options group_size, local_window), as `antslam outliers`
+    writes it: (spoiled PoseGraph, (count, 2) array of the false closures' vertex pairs)."""
+    settings = _core.slam.OutlierSettings()
+    settings.count, settings.kind, settings.seed = count, kind, seed
+    _options.apply(settings, _OUTLIERS, options, "add_outliers")
+    return _core.slam.add_outliers(graph, settings)
+
+
+def robust(graph, method="pcm-aco", *, variant=None, seed=1, **options):
+    """Decides which loop closures of the graph to trust and optimises it, as `antslam robust`
+    does (method: ls, cauchy, dcs, gnc, pcm-exact, pcm-aco; docs/robust-closures.md). Options
+    as the program's: confidence, cauchy_scale, dcs_phi, check_clique (False: the published
+    PCM), exact_time_limit (s), and for pcm-aco variant, seed, iterations, plateau_steps and the
+    engine's parameters (ants, rho, ...); backend, threads. The result: poses (n, 3), closures
+    ((m, 2) vertex pairs of the loop closures, in input order), accepted (m booleans), clique
+    (PCM methods), times; kept_graph(graph) is the graph `antslam robust` writes."""
+    settings = _core.slam.RobustSettings()
+    if variant is not None:
+        settings.aco.parameters.variant = variant
+    settings.aco.parameters.seed = seed
+    _options.apply(settings, _ROBUST, options, "robust")
+    return _core.slam.solve_robust(graph, method, settings)

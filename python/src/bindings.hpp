@@ -17,6 +17,7 @@ void bind_layered(py::module_& aco);         ///< layered_bindings.cpp: problems
 void bind_tsp(py::module_& tsp);             ///< tsp_bindings.cpp
 void bind_slam_data(py::module_& slam);      ///< slam_data_bindings.cpp: sets and graphs
 void bind_slam_optimize(py::module_& slam);  ///< slam_optimize_bindings.cpp
+void bind_robust(py::module_& slam);         ///< robust_bindings.cpp: false closures
 void bind_mapping(py::module_& mapping);     ///< mapping_bindings.cpp: the pipeline
 void bind_eval(py::module_& eval);           ///< eval_bindings.cpp
 void bind_clique(py::module_& clique);       ///< clique_bindings.cpp: maximum cliques

@@ -34,10 +34,11 @@ PYBIND11_MODULE(_core, m) {
   py::module_ slam = m.def_submodule("slam", "Fragment sets, pose graphs and their optimizers");
   bind_slam_data(slam);
   bind_slam_optimize(slam);
+  py::module_ clique = m.def_submodule("clique", "Maximum cliques: the ants, branch and bound");
+  bind_clique(clique);  // before the robust back ends, whose settings hold the ants' settings
+  bind_robust(slam);
   py::module_ mapping = m.def_submodule("mapping", "The AntSLAM pipeline on a laser log");
   bind_mapping(mapping);
   py::module_ eval = m.def_submodule("eval", "Trajectory evaluation: ATE, RPE, relations");
   bind_eval(eval);
-  py::module_ clique = m.def_submodule("clique", "Maximum cliques: the ants, branch and bound");
-  bind_clique(clique);
 }

@@ -1,0 +1,138 @@
+// antslam.slam, robust back ends: false loop closures added to a pose graph by the protocol of
+// Suenderhauf & Protzel 2012 (slamgraph/outliers.hpp) and the back ends that decide which
+// closures to trust (slamgraph/robust.hpp), as `antslam outliers` and `antslam robust` run them.
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "interrupt.hpp"
+#include "slam_types.hpp"
+#include "slamgraph/outliers.hpp"
+#include "slamgraph/robust.hpp"
+
+namespace antslam::python {
+
+namespace {
+
+/// (m, 2) array of vertex pairs.
+py::array_t<std::uint64_t> pairs_array(const std::vector<std::pair<std::size_t, std::size_t>>& p) {
+  py::array_t<std::uint64_t> out({static_cast<py::ssize_t>(p.size()), py::ssize_t{2}});
+  auto v = out.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    v(static_cast<py::ssize_t>(k), 0) = p[k].first;
+    v(static_cast<py::ssize_t>(k), 1) = p[k].second;
+  }
+  return out;
+}
+
+/// The result with the graph's closures as vertex pairs, in split.closures order.
+struct RobustRun {
+  slam::RobustResult result;
+  std::vector<std::pair<std::size_t, std::size_t>> closures;
+};
+
+}  // namespace
+
+void bind_robust(py::module_& m) {
+  py::class_<slam::OutlierSettings>(m, "OutlierSettings", "slamgraph/outliers.hpp")
+      .def(py::init<>())
+      .def_readwrite("count", &slam::OutlierSettings::count)
+      .def_property(
+          "kind",
+          [](const slam::OutlierSettings& s) { return std::string(slam::to_string(s.kind)); },
+          [](slam::OutlierSettings& s, const std::string& name) {
+            const auto kind = slam::parse_outlier_kind(name);
+            if (!kind) unknown_name("kind", name, "random, local, random-group, local-group");
+            s.kind = *kind;
+          })
+      .def_readwrite("group_size", &slam::OutlierSettings::group_size)
+      .def_readwrite("local_window", &slam::OutlierSettings::local_window)
+      .def_readwrite("seed", &slam::OutlierSettings::seed);
+  m.def(
+      "add_outliers",
+      [](const NamedGraph& g, const slam::OutlierSettings& settings) {
+        slam::SpoiledGraph spoiled = slam::add_outliers(g.graph, settings);
+        return py::make_tuple(NamedGraph{std::move(spoiled.graph), g.name},
+                              pairs_array(spoiled.outliers));
+      },
+      py::arg("graph"), py::arg("settings"), "(the spoiled graph, the false closures' pairs)");
+
+  py::class_<slam::RobustSettings>(m, "RobustSettings", "slamgraph/robust.hpp")
+      .def(py::init<>())
+      .def_readwrite("inlier_confidence", &slam::RobustSettings::inlier_confidence)
+      .def_readwrite("cauchy_scale", &slam::RobustSettings::cauchy_scale)
+      .def_readwrite("dcs_phi", &slam::RobustSettings::dcs_phi)
+      .def_readwrite("check_clique", &slam::RobustSettings::check_clique)
+      .def_property(
+          "exact_time_limit_s", [](const slam::RobustSettings& s) { return s.exact.time_limit_s; },
+          [](slam::RobustSettings& s, double seconds) { s.exact.time_limit_s = seconds; })
+      .def_readwrite("aco", &slam::RobustSettings::aco)
+      .def_readwrite("threads", &slam::RobustSettings::threads)
+      .def_property(
+          "backend",
+          [](const slam::RobustSettings& s) { return std::string(aco::to_string(s.backend)); },
+          [](slam::RobustSettings& s, const std::string& name) { s.backend = backend_from(name); });
+
+  py::class_<RobustRun>(m, "RobustResult", "What a robust back end decided (slamgraph/robust.hpp)")
+      .def_property_readonly(
+          "method",
+          [](const RobustRun& r) { return std::string(slam::to_string(r.result.method)); })
+      .def_property_readonly("poses",
+                             [](const RobustRun& r) { return poses_array(r.result.poses); })
+      .def_property_readonly("closures", [](const RobustRun& r) { return pairs_array(r.closures); })
+      .def_property_readonly(
+          "accepted",
+          [](const RobustRun& r) {
+            py::array_t<bool> out(static_cast<py::ssize_t>(r.result.accepted.size()));
+            auto v = out.mutable_unchecked<1>();
+            for (std::size_t k = 0; k < r.result.accepted.size(); ++k)
+              v(static_cast<py::ssize_t>(k)) = r.result.accepted[k];
+            return out;
+          })
+      .def_property_readonly("clique",
+                             [](const RobustRun& r) -> py::object {
+                               if (!r.result.clique) return py::none();
+                               return py::cast(r.result.clique->clique);
+                             })
+      .def_property_readonly("consistent_pairs",
+                             [](const RobustRun& r) -> py::object {
+                               if (!r.result.clique) return py::none();
+                               return py::cast(r.result.clique->consistent_pairs);
+                             })
+      .def_property_readonly("gnc_steps", [](const RobustRun& r) { return r.result.gnc_steps; })
+      .def_property_readonly("consistency_s",
+                             [](const RobustRun& r) { return r.result.consistency_s; })
+      .def_property_readonly("clique_s", [](const RobustRun& r) { return r.result.clique_s; })
+      .def_property_readonly("optimize_s", [](const RobustRun& r) { return r.result.optimize_s; })
+      .def_property_readonly("total_s", [](const RobustRun& r) { return r.result.total_s; })
+      .def(
+          "kept_graph",
+          [](const RobustRun& r, const NamedGraph& g) {
+            return NamedGraph{slam::kept_graph(g.graph, r.result), g.name};
+          },
+          py::arg("graph"), "The optimised graph: the poses, the odometry and the kept closures");
+
+  m.def(
+      "solve_robust",
+      [](const NamedGraph& g, const std::string& method, const slam::RobustSettings& settings) {
+        const auto kind = slam::parse_robust_method(method);
+        if (!kind) unknown_name("method", method, "ls, cauchy, dcs, gnc, pcm-exact, pcm-aco");
+        aco::resolve(settings.backend, settings.threads);  // serial on several threads fails here
+        return run_interruptible([&](PythonThread& python) {
+          slam::RobustSettings s = settings;
+          s.aco.termination.stop = python.stop_token();
+          RobustRun run{slam::solve_robust(g.graph, *kind, s, g.name), {}};
+          for (const std::size_t e : run.result.split.closures)
+            run.closures.emplace_back(g.graph.edges[e].from, g.graph.edges[e].to);
+          return run;
+        });
+      },
+      py::arg("graph"), py::arg("method"), py::arg("settings"));
+}
+
+}  // namespace antslam::python

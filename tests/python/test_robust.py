@@ -1,0 +1,73 @@
+"""antslam.slam's false closures and robust back ends: the same spoiled graph, decisions and
+optimised graph as `antslam outliers` and `antslam robust`, the decisions against the known
+false closures, and bad input."""
+import numpy as np
+import pytest
+
+import antslam
+from conftest import DATA, SOURCE
+
+RING = DATA / "posegraphs" / "ring.g2o"
+BAD = SOURCE / "tests" / "experiments" / "robust"
+
+
+@pytest.fixture(scope="module")
+def spoiled():
+    graph = antslam.slam.read_graph(RING)
+    return antslam.slam.add_outliers(graph, 20, kind="random-group", group_size=5, seed=3)
+
+
+def test_the_spoiled_graph_is_the_programs(spoiled, program, tmp_path):
+    graph, false = spoiled
+    program("outliers", RING, "--count", 20, "--kind", "random-group", "--group-size", 5,
+            "--seed", 3, "-o", tmp_path / "ring20.g2o")
+    graph.save(tmp_path / "python.g2o")
+    assert (tmp_path / "python.g2o").read_bytes() == (tmp_path / "ring20.g2o").read_bytes()
+    np.testing.assert_array_equal(false, np.loadtxt(tmp_path / "ring20.outliers.txt"))
+    assert false.shape == (20, 2) and len(graph) == 434
+
+
+@pytest.mark.parametrize("method", ["pcm-aco", "pcm-exact"])
+def test_pcm_keeps_every_true_closure_and_no_false_one(spoiled, method):
+    graph, false = spoiled
+    r = antslam.slam.robust(graph, method)
+    assert r.method == method and r.poses.shape == (434, 3)
+    assert len(r.closures) == len(r.accepted) == 46  # 26 true, 20 false
+    false_pairs = {tuple(p) for p in false.tolist()}
+    kept = {tuple(c) for c in r.closures[r.accepted].tolist()}
+    assert len(kept) == 26 and not kept & false_pairs
+    assert r.clique.weight == 26 and r.consistent_pairs > 0
+
+
+def test_least_squares_accepts_everything(spoiled):
+    r = antslam.slam.robust(spoiled[0], "ls")
+    assert r.accepted.all() and r.clique is None and r.consistent_pairs is None
+
+
+def test_the_decisions_and_the_graph_are_the_programs(spoiled, program, tmp_path):
+    graph, _ = spoiled
+    graph.save(tmp_path / "ring20.g2o")
+    program("robust", tmp_path / "ring20.g2o", "--method", "pcm-aco", "--plateau-steps", 10,
+            "--seed", 4, "-o", tmp_path / "program")
+    r = antslam.slam.robust(graph, "pcm-aco", plateau_steps=10, seed=4)
+    np.testing.assert_array_equal(r.closures[r.accepted],
+                                  np.loadtxt(tmp_path / "program.accepted.txt"))
+    r.kept_graph(graph).save(tmp_path / "python.g2o")
+    assert (tmp_path / "python.g2o").read_bytes() == (tmp_path / "program.g2o").read_bytes()
+
+
+def test_bad_input_is_one_line(spoiled):
+    graph, _ = spoiled
+    with pytest.raises(ValueError, match=r"method: unknown 'magic' \(expected one of ls, "):
+        antslam.slam.robust(graph, "magic")
+    with pytest.raises(TypeError, match="unexpected keyword argument 'plateau'"):
+        antslam.slam.robust(graph, plateau=1)
+    with pytest.raises(ValueError, match="inlier confidence must be in"):
+        antslam.slam.robust(graph, confidence=2.0)
+    with pytest.raises(ValueError, match="kind: unknown 'far'"):
+        antslam.slam.add_outliers(graph, 5, kind="far")
+    with pytest.raises(ValueError, match="groups of 1000000 need 1000003"):
+        antslam.slam.add_outliers(graph, 5, kind="random-group", group_size=10**6)
+    broken = antslam.slam.read_graph(BAD / "broken-chain.g2o")
+    with pytest.raises(RuntimeError, match=r"broken-chain\.g2o: no edge between vertices 1 and 2"):
+        antslam.slam.robust(broken)
