@@ -66,6 +66,7 @@ void swap_in(const Graph& g, std::vector<std::uint32_t>& clique,
 }
 
 /// (1,2)-swaps, the first gaining one in (v, u, w) order, until none gains or `stop` expires.
+/// Unless stopped, ws.tight and ws.missing are left those of the clique it returns.
 void ascend(const Graph& g, std::vector<std::uint32_t>& clique, SwapLocalSearch::Workspace& ws,
             const aco::StopToken& stop) {
   for (;;) {
@@ -114,7 +115,6 @@ void SwapLocalSearch::improve(const CliqueProblem& problem, std::vector<std::uin
   double best_weight = weight_of(g, clique);
   ws.barred.assign(ws.members.size(), 0);
   for (std::size_t step = 0; step < plateau_steps && !stop.expired(); ++step) {
-    find_one_tight(g, ws);
     std::size_t pick = 0;  // the lowest 1-tight vertex not barred and not lighter than its v
     while (pick < ws.tight.size() && (detail::test_bit(ws.barred, ws.tight[pick]) ||
                                       g.weight(ws.tight[pick]) < g.weight(ws.missing[pick])))

@@ -77,19 +77,17 @@ def main():
         for g_seed in range(1, args.graphs + 1):
             g = random_graph(n, prob, g_seed)
             exact = antslam.clique.exact(g, args.exact_limit)
-            runs = {}
-            for steps in args.steps:
-                for seed in range(1, args.seeds + 1):
-                    r = antslam.clique.aco(g, seed=seed, plateau_steps=steps)
-                    runs[steps, seed] = r
+            runs = {(steps, seed): antslam.clique.aco(g, seed=seed, plateau_steps=steps)
+                    for steps in args.steps for seed in range(1, args.seeds + 1)}
             best = max([exact.weight] + [r.weight for r in runs.values()])
             for (steps, seed), r in runs.items():
                 rows.append([kind, g_seed, steps, seed, r.weight, best, r.clique.elapsed_s,
                              exact.weight, exact.optimal, exact.elapsed_s])
+            means = {s: np.mean([runs[s, k].weight for k in range(1, args.seeds + 1)])
+                     for s in args.steps}
             progress(f"{kind} graph {g_seed}: exact {exact.weight:.0f}"
                      f"{'' if exact.optimal else ' (budget)'}, ants "
-                     + ", ".join(f"{s}: {np.mean([runs[s, k].weight for k in range(1, args.seeds + 1)]):.2f}"
-                                 for s in args.steps))
+                     + ", ".join(f"{s}: {m:.2f}" for s, m in means.items()))
     save_csv(args, "clique-plateau", ["kind", "graph", "plateau_steps", "seed", "ants_clique",
                                       "best_known", "ants_s", "exact_clique", "exact_optimal",
                                       "exact_s"], rows)

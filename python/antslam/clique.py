@@ -60,9 +60,10 @@ def aco(graph, variant=None, seed=1, **options):
     """The ants' maximum clique, as `antslam robust --method pcm-aco` searches it. Options (the
     defaults are the program's): iterations, stagnation (iterations without a better clique),
     time_limit (s), local_search (False: the ants' cliques as built), plateau_steps (plateau
-    moves after each ant's (1,2)-swaps; 0, the default: none; docs/robust-closures.md), backend (auto, serial, omp, tbb), threads,
-    and the engine's parameters (ants, rho, alpha, ...). The run also stops when a clique
-    reaches the colouring bound (stop_reason "target": proven maximum)."""
+    moves after each ant's (1,2)-swaps; 0, the default: none; docs/robust-closures.md),
+    backend (auto, serial, omp, tbb), threads, and the engine's parameters (ants, rho, ...).
+    The run also stops when a clique reaches the colouring bound (stop_reason "target": proven
+    maximum)."""
     settings = _core.clique.AcoSettings()
     if variant is not None:
         settings.parameters.variant = variant

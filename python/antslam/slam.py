@@ -150,7 +150,7 @@ trial_seed = _core.slam.trial_seed
 
 # False loop closures and the robust back ends (`antslam outliers`, `antslam robust`).
 RobustResult = _core.slam.RobustResult
-ROBUST_METHODS = ("ls", "cauchy", "dcs", "gnc", "pcm-exact", "pcm-aco")
+ROBUST_METHODS = tuple(name.strip() for name in _core.slam.robust_method_names().split(","))
 _OUTLIERS = {"group_size": "group_size", "local_window": "local_window"}
 _ROBUST = dict(
     {name: "aco.parameters." + attribute for name, attribute in _options.ENGINE.items()},

@@ -77,6 +77,16 @@ py::array_t<std::uint32_t> index_array(std::span<const std::uint32_t> values) {
   return out;
 }
 
+py::array_t<std::uint64_t> pairs_array(std::span<const std::pair<std::size_t, std::size_t>> pairs) {
+  py::array_t<std::uint64_t> out({static_cast<py::ssize_t>(pairs.size()), py::ssize_t{2}});
+  auto v = out.mutable_unchecked<2>();
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    v(static_cast<py::ssize_t>(k), 0) = pairs[k].first;
+    v(static_cast<py::ssize_t>(k), 1) = pairs[k].second;
+  }
+  return out;
+}
+
 std::vector<std::uint32_t> indices_from(const py::handle& values_in, const std::string& name) {
   const py::array array = py::array::ensure(values_in);
   if (!array) throw std::invalid_argument(name + ": expected an array of integers");

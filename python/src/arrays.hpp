@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "slamgraph/pose2.hpp"
@@ -32,6 +33,8 @@ py::array_t<double> trajectory_array(const slam::Trajectory& trajectory);
 slam::Trajectory trajectory_from(const DoubleArray& array, const std::string& name);
 
 py::array_t<std::uint32_t> index_array(std::span<const std::uint32_t> values);
+/// Vertex pairs as an (m, 2) array.
+py::array_t<std::uint64_t> pairs_array(std::span<const std::pair<std::size_t, std::size_t>> pairs);
 /// A one-dimensional array (or sequence) of integers in [0, 2^32) as a vector; throws
 /// std::invalid_argument naming the argument and the entry otherwise.
 std::vector<std::uint32_t> indices_from(const py::handle& values, const std::string& name);

@@ -19,15 +19,12 @@ namespace antslam::python {
 
 namespace {
 
-/// (m, 2) array of vertex pairs.
-py::array_t<std::uint64_t> pairs_array(const std::vector<std::pair<std::size_t, std::size_t>>& p) {
-  py::array_t<std::uint64_t> out({static_cast<py::ssize_t>(p.size()), py::ssize_t{2}});
-  auto v = out.mutable_unchecked<2>();
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    v(static_cast<py::ssize_t>(k), 0) = p[k].first;
-    v(static_cast<py::ssize_t>(k), 1) = p[k].second;
-  }
-  return out;
+/// "a, b, c": the names of a table of {value, name, summary} (kRobustMethods, kOutlierKinds).
+template <class Table>
+std::string names_of(const Table& table) {
+  std::string names;
+  for (const auto& entry : table) names += (names.empty() ? "" : ", ") + std::string(entry.name);
+  return names;
 }
 
 /// The result with the graph's closures as vertex pairs, in split.closures order.
@@ -47,7 +44,7 @@ void bind_robust(py::module_& m) {
           [](const slam::OutlierSettings& s) { return std::string(slam::to_string(s.kind)); },
           [](slam::OutlierSettings& s, const std::string& name) {
             const auto kind = slam::parse_outlier_kind(name);
-            if (!kind) unknown_name("kind", name, "random, local, random-group, local-group");
+            if (!kind) unknown_name("kind", name, names_of(slam::kOutlierKinds));
             s.kind = *kind;
           })
       .def_readwrite("group_size", &slam::OutlierSettings::group_size)
@@ -117,11 +114,12 @@ void bind_robust(py::module_& m) {
           },
           py::arg("graph"), "The optimised graph: the poses, the odometry and the kept closures");
 
+  m.def("robust_method_names", [] { return names_of(slam::kRobustMethods); });
   m.def(
       "solve_robust",
       [](const NamedGraph& g, const std::string& method, const slam::RobustSettings& settings) {
         const auto kind = slam::parse_robust_method(method);
-        if (!kind) unknown_name("method", method, "ls, cauchy, dcs, gnc, pcm-exact, pcm-aco");
+        if (!kind) unknown_name("method", method, names_of(slam::kRobustMethods));
         aco::resolve(settings.backend, settings.threads);  // serial on several threads fails here
         return run_interruptible([&](PythonThread& python) {
           slam::RobustSettings s = settings;

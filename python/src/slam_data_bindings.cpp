@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "arrays.hpp"
@@ -126,18 +127,13 @@ void bind_pose_graph(py::module_& m) {
             g.graph.vertices = std::move(v);
           },
           "Vertex poses (n, 3): the start of ceres and nlopt")
-      .def_property_readonly(
-          "edges",
-          [](const NamedGraph& g) {
-            py::array_t<std::uint64_t> out(
-                {static_cast<py::ssize_t>(g.graph.edges.size()), py::ssize_t{2}});
-            auto v = out.mutable_unchecked<2>();
-            for (std::size_t k = 0; k < g.graph.edges.size(); ++k) {
-              v(static_cast<py::ssize_t>(k), 0) = g.graph.edges[k].from;
-              v(static_cast<py::ssize_t>(k), 1) = g.graph.edges[k].to;
-            }
-            return out;
-          })
+      .def_property_readonly("edges",
+                             [](const NamedGraph& g) {
+                               std::vector<std::pair<std::size_t, std::size_t>> pairs;
+                               for (const slam::PoseGraphEdge& e : g.graph.edges)
+                                 pairs.emplace_back(e.from, e.to);
+                               return pairs_array(pairs);
+                             })
       .def_property_readonly("measurements",
                              [](const NamedGraph& g) {
                                std::vector<slam::Pose2> z;
