@@ -19,6 +19,7 @@
 #include "cli/output_files.hpp"
 #include "commands.hpp"
 #include "eval/ate.hpp"
+#include "slamgraph/ceres_baseline.hpp"
 #include "slamgraph/g2o.hpp"
 #include "slamgraph/optimize.hpp"
 #include "slamgraph/outliers.hpp"
@@ -64,7 +65,7 @@ std::string outliers_file(const RobustOptions& o) {
 }
 
 nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& graph,
-                              const slam::RobustResult& r,
+                              const slam::RobustResult& r, const slam::ResidualSummary& fit,
                               const std::optional<slam::AcceptanceScores>& sc,
                               const std::vector<Reference>& references) {
   const auto optional_number = [](const std::optional<double>& v) {
@@ -97,6 +98,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
         {"aco_max_iterations", o.s.aco.termination.max_iterations},
         {"aco_stagnation_iterations", o.s.aco.termination.stagnation_iterations},
         {"aco_plateau_steps", o.s.aco.plateau_steps},
+        {"aco_restart_stagnant", o.s.aco.parameters.restart_stagnant},
         {"backend", o.backend},
         {"threads", o.s.threads}}}};
   if (sc) {
@@ -114,6 +116,9 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
                    {"work", r.clique->work}};
   }
   if (r.method == slam::RobustMethod::gnc) j["gnc_steps"] = r.gnc_steps;
+  j["residuals"] = {{"chi2", fit.chi2},
+                    {"degrees_of_freedom", fit.degrees_of_freedom},
+                    {"variance_factor", optional_number(fit.variance_factor)}};
   j["ate"] = nlohmann::ordered_json::array();
   for (const Reference& ref : references)
     j["ate"].push_back({{"reference", ref.path},
@@ -157,8 +162,9 @@ void run(RobustOptions o) {
   for (std::size_t i = 0; i < o.references.size(); ++i)
     references.push_back({o.references[i], eval::indexed_ate(r.poses, reference_poses[i])});
 
-  outputs.write(graph_out,
-                [&](std::ostream& out) { slam::write_g2o(out, slam::kept_graph(graph, r)); });
+  const slam::PoseGraph kept = slam::kept_graph(graph, r);
+  const slam::ResidualSummary fit = slam::residual_summary(kept, r.poses);
+  outputs.write(graph_out, [&](std::ostream& out) { slam::write_g2o(out, kept); });
   outputs.write(accepted_out, [&](std::ostream& out) {
     for (std::size_t k = 0; k < split.closures.size(); ++k)
       if (r.accepted[k]) {
@@ -167,7 +173,7 @@ void run(RobustOptions o) {
       }
   });
   outputs.write(json_out, [&](std::ostream& out) {
-    out << report(o, graph, r, scores, references).dump(2) << '\n';
+    out << report(o, graph, r, fit, scores, references).dump(2) << '\n';
   });
   outputs.commit();
 
@@ -181,6 +187,11 @@ void run(RobustOptions o) {
   for (const Reference& ref : references)
     std::printf("  ATE against %s: %.4f m rms, %.4f m max\n", ref.path.c_str(),
                 ref.ate.translation_m.rmse, ref.ate.translation_m.max);
+  if (fit.variance_factor)
+    std::printf(
+        "  residuals of the kept graph: chi2 %.4g over %lld degrees of freedom "
+        "(variance factor %.4g: 1 if the graph states its noise as it is)\n",
+        fit.chi2, static_cast<long long>(fit.degrees_of_freedom), *fit.variance_factor);
   std::printf("  time %.3f s (consistency %.3f, clique %.3f, optimisation %.3f)\n", r.total_s,
               r.consistency_s, r.clique_s, r.optimize_s);
   std::printf("wrote %s.g2o, %s.accepted.txt, %s.json\n", o.output.c_str(), o.output.c_str(),
@@ -232,6 +243,11 @@ void add_robust_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--plateau-steps", o->s.aco.plateau_steps,
                   "pcm-aco: plateau moves after each ant's (1,2)-swaps (0 = none)")
+      ->check(count_in(0, kMaxIterations))
+      ->capture_default_str();
+  cmd->add_option("--restart-stagnant", o->s.aco.parameters.restart_stagnant,
+                  "pcm-aco, mmas: re-initialise the trails when the restart-best is this many "
+                  "iterations old (0 = only on converged trails, as ACOTSP)")
       ->check(count_in(0, kMaxIterations))
       ->capture_default_str();
   cmd->add_option("--seed", o->s.aco.parameters.seed, "pcm-aco: seed of the ants")

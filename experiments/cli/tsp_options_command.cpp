@@ -118,6 +118,12 @@ void add_tsp_options(CLI::App& command, TspOptions& o, bool single_run) {
       ->capture_default_str();
   command.add_option("--restarts", p.restarts, "MMAS: re-initialise trails on stagnation")
       ->capture_default_str();
+  command
+      .add_option("--restart-stagnant", p.restart_stagnant,
+                  "MMAS: stagnation is a restart-best this many iterations old (0 = converged "
+                  "trails and 250 iterations, as ACOTSP)")
+      ->check(count_in(0, 100'000'000))
+      ->capture_default_str();
   command.add_option("--p0", p.p0, "hybrid: probability of a uniform choice")
       ->check(finite_in(0.0, 1.0))
       ->capture_default_str();

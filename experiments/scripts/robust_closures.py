@@ -43,6 +43,8 @@ def options():
                    help=f"back ends ({METHODS})")
     p.add_argument("--plateau-steps", type=integer_at_least(0),
                    help="pcm-aco: its --plateau-steps (default: the program's)")
+    p.add_argument("--restart-stagnant", type=integer_at_least(0),
+                   help="pcm-aco: its --restart-stagnant (default: the program's)")
     count_option(p, "--seeds", "seeds 1..N per count and kind", 10, 1)
     count_option(p, "--threads", "threads of the consistency and the ants", 2, 2)
     ranks_option(p)
@@ -114,9 +116,11 @@ def run_cases(args, cases):
     needed = {t[0]: t[1] for t in todo if not os.path.exists(t[0])}
     run_batch(args, list(needed.values()), "outliers")
     load = load_average()
-    walk = [] if args.plateau_steps is None else ["--plateau-steps", args.plateau_steps]
+    ant_options = [] if args.plateau_steps is None else ["--plateau-steps", args.plateau_steps]
+    if args.restart_stagnant is not None:
+        ant_options += ["--restart-stagnant", args.restart_stagnant]
     run_batch(args, [["robust", spoiled, "--method", method, "--threads", args.threads, *refs,
-                      *(walk if method == "pcm-aco" else []), "-o", prefix]
+                      *(ant_options if method == "pcm-aco" else []), "-o", prefix]
                      for spoiled, _, method, prefix, refs in todo], "robust")
     for _, _, _, prefix, _ in todo:
         for ext in (".g2o", ".accepted.txt"):

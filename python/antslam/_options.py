@@ -6,7 +6,7 @@ and an unknown or ill-typed option fails with one line naming it."""
 ENGINE = {
     "ants": "ants", "alpha": "alpha", "beta": "beta", "rho": "rho", "q0": "q0", "xi": "xi",
     "elite_weight": "elite_weight", "rank_width": "rank_width", "p_best": "p_best",
-    "restarts": "restarts", "p0": "p0", "glob_best_freq": "glob_best_freq",
+    "restarts": "restarts", "restart_stagnant": "restart_stagnant", "p0": "p0", "glob_best_freq": "glob_best_freq",
     "tau_max": "tau_max", "tau_init": "tau_init", "ls_ants": "local_search_ants",
 }
 

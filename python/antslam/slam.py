@@ -9,6 +9,7 @@
 
     spoiled, false = antslam.slam.add_outliers(g, 1000, kind="random", seed=1)
     r = antslam.slam.robust(spoiled, "pcm-aco")          # r.accepted: per loop closure
+    c = antslam.slam.consistency(spoiled)                # c.graph: PCM's consistency graph
 
 Methods: as, eas, ras, acs, mmas, hybrid, hybrid+nlopt, nlopt, ceres, ceres-robust, random,
 exhaustive. On a pose graph ceres, ceres-robust and nlopt run on the graph itself (from its
@@ -16,6 +17,8 @@ vertex poses, fixed vertices held); the others on its fragment chain (docs/slamg
 """
 import os
 from dataclasses import dataclass
+
+import numpy as np
 
 from . import _core, _options
 
@@ -168,6 +171,24 @@ def add_outliers(graph, count, kind="random", seed=1, **options):
     settings.count, settings.kind, settings.seed = count, kind, seed
     _options.apply(settings, _OUTLIERS, options, "add_outliers")
     return _core.slam.add_outliers(graph, settings)
+
+
+@dataclass(frozen=True)
+class Consistency:
+    """The pairwise consistency of a graph's loop closures (PCM, Mangelson et al. 2018), as
+    `antslam robust --method pcm-*` tests it before its clique."""
+    graph: object  #: antslam.clique graph: vertex k is closure k, an edge a consistent pair
+    closures: np.ndarray  #: (m, 2) vertex pairs of the loop closures, in input order
+    odometry_consistent: np.ndarray  #: m booleans: closure k agrees with the odometry between
+    #: its ends (a closure that does not has no consistent pair)
+    threshold: float  #: chi-square (3 dof) bound on a cycle's squared Mahalanobis distance
+
+
+def consistency(graph, confidence=0.99, *, threads=1, backend="auto"):
+    """The consistency graph of the graph's loop closures (slamgraph/consistency.hpp): its
+    maximum clique (antslam.clique.aco or exact, with their defaults) is the one `antslam robust
+    --method pcm-aco / pcm-exact --confidence C` starts from."""
+    return Consistency(*_core.slam.consistency(graph, confidence, threads, backend))
 
 
 def robust(graph, method="pcm-aco", *, variant=None, seed=1, **options):

@@ -46,6 +46,7 @@ void bind_engine(py::module_& m) {
       .def_readwrite("rank_width", &aco::Parameters::rank_width)
       .def_readwrite("p_best", &aco::Parameters::p_best)
       .def_readwrite("restarts", &aco::Parameters::restarts)
+      .def_readwrite("restart_stagnant", &aco::Parameters::restart_stagnant)
       .def_readwrite("p0", &aco::Parameters::p0)
       .def_readwrite("glob_best_freq", &aco::Parameters::glob_best_freq)
       .def_readwrite("tau_max", &aco::Parameters::tau_max)

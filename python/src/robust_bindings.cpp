@@ -10,8 +10,10 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "clique/graph.hpp"
 #include "interrupt.hpp"
 #include "slam_types.hpp"
+#include "slamgraph/consistency.hpp"
 #include "slamgraph/outliers.hpp"
 #include "slamgraph/robust.hpp"
 
@@ -25,6 +27,23 @@ std::string names_of(const Table& table) {
   std::string names;
   for (const auto& entry : table) names += (names.empty() ? "" : ", ") + std::string(entry.name);
   return names;
+}
+
+/// The vertex pairs of the graph's loop closures, in split.closures order.
+std::vector<std::pair<std::size_t, std::size_t>> closure_pairs(const slam::PoseGraph& graph,
+                                                               const slam::ChainSplit& split) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  pairs.reserve(split.closures.size());
+  for (const std::size_t e : split.closures)
+    pairs.emplace_back(graph.edges[e].from, graph.edges[e].to);
+  return pairs;
+}
+
+py::array_t<bool> bool_array(const std::vector<bool>& values) {
+  py::array_t<bool> out(static_cast<py::ssize_t>(values.size()));
+  auto v = out.mutable_unchecked<1>();
+  for (std::size_t k = 0; k < values.size(); ++k) v(static_cast<py::ssize_t>(k)) = values[k];
+  return out;
 }
 
 /// The result with the graph's closures as vertex pairs, in split.closures order.
@@ -82,15 +101,8 @@ void bind_robust(py::module_& m) {
       .def_property_readonly("poses",
                              [](const RobustRun& r) { return poses_array(r.result.poses); })
       .def_property_readonly("closures", [](const RobustRun& r) { return pairs_array(r.closures); })
-      .def_property_readonly(
-          "accepted",
-          [](const RobustRun& r) {
-            py::array_t<bool> out(static_cast<py::ssize_t>(r.result.accepted.size()));
-            auto v = out.mutable_unchecked<1>();
-            for (std::size_t k = 0; k < r.result.accepted.size(); ++k)
-              v(static_cast<py::ssize_t>(k)) = r.result.accepted[k];
-            return out;
-          })
+      .def_property_readonly("accepted",
+                             [](const RobustRun& r) { return bool_array(r.result.accepted); })
       .def_property_readonly("clique",
                              [](const RobustRun& r) -> py::object {
                                if (!r.result.clique) return py::none();
@@ -125,12 +137,26 @@ void bind_robust(py::module_& m) {
           slam::RobustSettings s = settings;
           s.aco.termination.stop = python.stop_token();
           RobustRun run{slam::solve_robust(g.graph, *kind, s, g.name), {}};
-          for (const std::size_t e : run.result.split.closures)
-            run.closures.emplace_back(g.graph.edges[e].from, g.graph.edges[e].to);
+          run.closures = closure_pairs(g.graph, run.result.split);
           return run;
         });
       },
       py::arg("graph"), py::arg("method"), py::arg("settings"));
+  m.def(
+      "consistency",
+      [](const NamedGraph& g, double confidence, std::size_t threads, const std::string& backend) {
+        slam::ConsistencySettings settings;
+        settings.confidence = confidence;
+        settings.backend = backend_from(backend);
+        settings.threads = threads;
+        const slam::ChainSplit split = slam::split_chain(g.graph, g.name);
+        const slam::ConsistencyGraph c = slam::pairwise_consistency(g.graph, split, settings);
+        return py::make_tuple(clique::Graph(c.closures, c.pairs),
+                              pairs_array(closure_pairs(g.graph, split)),
+                              bool_array(c.odometry_consistent), c.threshold);
+      },
+      py::arg("graph"), py::arg("confidence"), py::arg("threads"), py::arg("backend"),
+      "(consistency graph, closures' vertex pairs, odometry-consistent flags, threshold)");
 }
 
 }  // namespace antslam::python

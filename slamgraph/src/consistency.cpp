@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "aco/backend_factory.hpp"
 #include "slamgraph/chi_square.hpp"
@@ -108,6 +109,9 @@ double CycleTest::squared_distance(std::size_t k) const {
 
 ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& split,
                                       const ConsistencySettings& settings) {
+  if (!(settings.confidence > 0.0 && settings.confidence < 1.0))
+    throw std::invalid_argument("pairwise consistency: confidence must be in (0, 1), got " +
+                                std::to_string(settings.confidence));
   ConsistencyGraph result;
   result.threshold = chi_square3_quantile(settings.confidence);
   const CycleTest test(graph, split);

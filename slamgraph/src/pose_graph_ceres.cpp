@@ -120,4 +120,14 @@ std::vector<double> edge_chi2(const PoseGraph& graph, std::span<const Pose2> pos
   return chi2;
 }
 
+ResidualSummary residual_summary(const PoseGraph& graph, std::span<const Pose2> poses) {
+  ResidualSummary summary;
+  for (const double c : edge_chi2(graph, poses)) summary.chi2 += c;
+  summary.degrees_of_freedom = 3 * static_cast<std::int64_t>(graph.edges.size()) -
+                               3 * (static_cast<std::int64_t>(graph.vertices.size()) - 1);
+  if (summary.degrees_of_freedom > 0)
+    summary.variance_factor = summary.chi2 / static_cast<double>(summary.degrees_of_freedom);
+  return summary;
+}
+
 }  // namespace antslam::slam

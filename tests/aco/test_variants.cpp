@@ -8,8 +8,10 @@
 #include <numeric>
 #include <stop_token>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "aco/subset_trail.hpp"
 #include "aco/synthetic_layered.hpp"
 #include "aco/variants.hpp"
 #include "test_problems.hpp"
@@ -94,6 +96,35 @@ TEST(Mmas, ReinitialisesTrailsOnStagnation) {
       problem, {.ants = 10, .seed = 1}, {}, rule);
   for (int it = 0; it < 300; ++it) colony.step();
   EXPECT_GT(colony.update().restarts(), 0U);
+}
+
+TEST(Mmas, ReinitialisesTrailsWhenTheRestartBestIsKIterationsOld) {
+  // One unchanging best {0, 1} of cost 10, found at iteration 1: with rho 0.2 and local search
+  // tau_max = 1 / (0.2 * 10) = 0.5, elements 2 and 3 evaporate, and at iteration 1 + 3 the
+  // restart-best is 3 iterations old: every trail is tau_max again.
+  const Solution best{{0, 1}, 10.0};
+  const auto run = [&](std::uint64_t restart_stagnant, std::uint64_t iterations) {
+    MaxMinUpdate update({.rho = 0.2, .restart_stagnant = restart_stagnant});
+    SubsetTrail trail(4);
+    update.initialize(trail, {.reference_cost = 10.0, .decisions = 4, .local_search = true});
+    for (std::uint64_t it = 1; it <= iterations; ++it)
+      update.apply(trail, {.ants = {},
+                           .ranking = {},
+                           .iteration_best = best,
+                           .global_best = best,
+                           .iteration = it});
+    return std::pair{trail, update.restarts()};
+  };
+  const auto [before, none] = run(3, 3);
+  EXPECT_EQ(none, 0U);
+  EXPECT_DOUBLE_EQ(before.at(0), 0.5);  // deposited every iteration, clamped at tau_max
+  EXPECT_LT(before.at(2), 0.5 * 0.8 * 0.8 + 1e-12);
+  const auto [after, one] = run(3, 4);
+  EXPECT_EQ(one, 1U);
+  for (std::size_t e = 0; e < 4; ++e) EXPECT_DOUBLE_EQ(after.at(e), 0.5) << e;
+  EXPECT_EQ(run(3, 7).second, 1U);   // the next restart-best is found at 5 ...
+  EXPECT_EQ(run(3, 8).second, 2U);   // ... and is 3 iterations old at 8
+  EXPECT_EQ(run(0, 40).second, 0U);  // ACOTSP's test: not before iteration 250
 }
 
 TEST(Acs, LocalUpdateErodesUsedEdgesTowardsTau0) {

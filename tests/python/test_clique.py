@@ -43,8 +43,8 @@ def test_every_search_against_brute_force(seed, weighted):
     best = brute_force(12, edges, weights)
     exact = antslam.clique.exact(g)
     assert exact.optimal and exact.weight == best and g.is_clique(exact.vertices)
-    for steps in (0, 10):
-        ants = antslam.clique.aco(g, seed=seed, plateau_steps=steps)
+    for options in ({}, {"plateau_steps": 10}, {"restart_stagnant": 3}):
+        ants = antslam.clique.aco(g, seed=seed, **options)
         assert ants.weight == best and g.is_clique(ants.vertices)
         assert g.weight_of(ants.vertices) == ants.weight
     greedy = antslam.clique.greedy(g)
@@ -64,7 +64,8 @@ def test_the_seed_gives_the_same_clique_on_every_thread_count_and_backend():
 def test_the_defaults_are_the_programs():
     s = antslam.clique.AcoSettings()
     assert (s.parameters.variant, s.termination.max_iterations,
-            s.termination.stagnation_iterations, s.plateau_steps) == ("mmas", 100, 20, 0)
+            s.termination.stagnation_iterations, s.plateau_steps,
+            s.parameters.restart_stagnant) == ("mmas", 100, 20, 0, 0)
 
 
 @pytest.mark.parametrize("vertices, edges, weights, message", [

@@ -71,3 +71,34 @@ def test_bad_input_is_one_line(spoiled):
     broken = antslam.slam.read_graph(BAD / "broken-chain.g2o")
     with pytest.raises(RuntimeError, match=r"broken-chain\.g2o: no edge between vertices 1 and 2"):
         antslam.slam.robust(broken)
+
+
+def test_the_consistency_graph_is_the_one_pcm_searches(spoiled):
+    graph, false = spoiled
+    c = antslam.slam.consistency(graph)
+    r = antslam.slam.robust(graph, "pcm-aco", check_clique=False)
+    np.testing.assert_array_equal(c.closures, r.closures)
+    assert len(c.graph) == 46 and c.threshold == pytest.approx(11.344866730144)  # chi2(3), 0.99
+    assert antslam.clique.aco(c.graph).vertices.tolist() == r.clique.vertices.tolist()
+    best = antslam.clique.exact(c.graph)
+    assert best.optimal and best.weight == 26
+    false_pairs = {tuple(p) for p in false.tolist()}
+    assert not {tuple(c.closures[k]) for k in best.vertices} & false_pairs
+
+
+def test_the_consistency_graph_keeps_its_invariants(spoiled):
+    graph, _ = spoiled
+    c = antslam.slam.consistency(graph, threads=2)
+    strict = antslam.slam.consistency(graph, confidence=0.01)
+    assert strict.threshold == pytest.approx(0.114831801899)  # chi2(3), 0.01
+    n = len(c.graph)
+    edges = {(k, l) for k in range(n) for l in range(k + 1, n) if c.graph.adjacent(k, l)}
+    strict_edges = {(k, l) for k in range(n) for l in range(k + 1, n)
+                    if strict.graph.adjacent(k, l)}
+    assert strict_edges < edges  # a stricter test keeps a subset of the pairs
+    assert all(c.graph.adjacent(l, k) for k, l in edges)
+    # a closure that disagrees with the odometry between its ends has no consistent pair
+    lone = [k for k in range(n) if not c.odometry_consistent[k]]
+    assert lone and not any(k in pair for pair in edges for k in lone)
+    with pytest.raises(ValueError, match="confidence"):
+        antslam.slam.consistency(graph, confidence=1.5)

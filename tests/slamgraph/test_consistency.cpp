@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "aco/backend_kind.hpp"
@@ -213,6 +214,21 @@ TEST(Consistency, NoiseFreeClosuresAreAllConsistent) {
   const ConsistencyGraph graph = pairwise_consistency(t.graph, split);
   const std::size_t m = split.closures.size();
   EXPECT_EQ(graph.pairs.size(), m * (m - 1) / 2);
+}
+
+TEST(Consistency, AConfidenceOutsideZeroOneIsRefusedByName) {
+  const testing::TrueGraph t = testing::square_laps(3, 5, 1, 0.0, 1);
+  const ChainSplit split = split_chain(t.graph, "square");
+  for (const double confidence : {0.0, 1.0, 1.5, -0.1, std::nan("")}) {
+    try {
+      pairwise_consistency(t.graph, split, {.confidence = confidence});
+      ADD_FAILURE() << "confidence " << confidence << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(
+          std::string(e.what()).rfind("pairwise consistency: confidence must be in (0, 1)", 0), 0U)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace

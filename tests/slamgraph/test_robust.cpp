@@ -79,6 +79,17 @@ TEST(PoseGraphCeres, DcsAndWeightedLossesAsDocumented) {
   const std::vector<double> chi2 = edge_chi2(g, std::vector<Pose2>{Pose2{}, Pose2{1.5, 0, 0}});
   EXPECT_NEAR(chi2[0], 0.25, 1e-12);
   EXPECT_NEAR(chi2[1], 0.25, 1e-12);  // inverted to first order: exact for a pure translation
+  // Two edges on two vertices: 6 - 3 = 3 degrees of freedom, variance factor 0.5 / 3.
+  const ResidualSummary both = residual_summary(g, std::vector<Pose2>{Pose2{}, Pose2{1.5, 0, 0}});
+  EXPECT_NEAR(both.chi2, 0.5, 1e-12);
+  EXPECT_EQ(both.degrees_of_freedom, 3);
+  ASSERT_TRUE(both.variance_factor);
+  EXPECT_NEAR(*both.variance_factor, 0.5 / 3.0, 1e-12);
+  g.edges.pop_back();  // a chain alone has no redundancy
+  const ResidualSummary chain = residual_summary(g, std::vector<Pose2>{Pose2{}, Pose2{1.5, 0, 0}});
+  EXPECT_NEAR(chain.chi2, 0.25, 1e-12);
+  EXPECT_EQ(chain.degrees_of_freedom, 0);
+  EXPECT_FALSE(chain.variance_factor);
 }
 
 TEST(Robust, PcmMethodsKeepTheTrueClosuresAndDropTheFalseOnes) {

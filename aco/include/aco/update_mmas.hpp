@@ -17,6 +17,9 @@ struct MaxMinSettings {
   double lambda = 0.05;               ///< lambda of the branching factor used to detect stagnation
   std::uint64_t check_every = 100;    ///< iterations between stagnation checks
   std::uint64_t restart_after = 250;  ///< no restart unless the restart-best is this old
+  /// k > 0: re-initialise as soon as the restart-best is k iterations old, whatever the
+  /// branching factor (for short runs, which end before the trails converge); 0: ACOTSP's test.
+  std::uint64_t restart_stagnant = 0;
 };
 
 class MaxMinUpdate {
@@ -62,9 +65,7 @@ class MaxMinUpdate {
     trail.clamp(tau_min_, tau_max_, v.parallel);
 
     update_schedule(v.iteration);
-    if (s_.reinitialize && v.iteration % s_.check_every == 0 &&
-        v.iteration - restart_found_best_ > s_.restart_after &&
-        trail.branching_factor(s_.lambda) / trail.converged_branching() < 1.00001) {
+    if (s_.reinitialize && stagnated(trail, v.iteration)) {
       trail.fill(tau_max_);
       restart_best_ = Solution{};
       restart_iteration_ = v.iteration;
@@ -105,6 +106,17 @@ class MaxMinUpdate {
       tau_min_ = tau_max_ * (1.0 - p_dec) / (std::max(mean_options_ - 1.0, 1.0) * p_dec);
     }
     tau_min_ = std::min(tau_min_, tau_max_);
+  }
+
+  /// Stuetzle's restart test: every check_every iterations, a restart-best older than
+  /// restart_after and a converged trail (lambda-branching factor at its minimum); or, with
+  /// restart_stagnant = k, a restart-best k iterations old.
+  template <class Trail>
+  bool stagnated(const Trail& trail, std::uint64_t iteration) const {
+    const std::uint64_t age = iteration - restart_found_best_;
+    if (s_.restart_stagnant > 0) return age >= s_.restart_stagnant;
+    return iteration % s_.check_every == 0 && age > s_.restart_after &&
+           trail.branching_factor(s_.lambda) / trail.converged_branching() < 1.00001;
   }
 
   /// How often the restart-best rather than the iteration-best deposits (ACOTSP; with local

@@ -49,8 +49,10 @@ struct Parameters {
   double elite_weight = 0.0;   ///< EAS weight e of the best-so-far deposit; 0 = n
   std::size_t rank_width = 6;  ///< RAS w: the w-1 best ants and the best-so-far deposit
   // MAX-MIN Ant System
-  double p_best = 0.05;  ///< sets tau_min (Stuetzle & Hoos 2000)
-  bool restarts = true;  ///< re-initialise trails on stagnation
+  double p_best = 0.05;                ///< sets tau_min (Stuetzle & Hoos 2000)
+  bool restarts = true;                ///< re-initialise trails on stagnation
+  std::uint64_t restart_stagnant = 0;  ///< k > 0: restart when the restart-best is k iterations
+                                       ///< old; 0: ACOTSP's branching-factor test
   // AntSLAM hybrid (paper Sec. IV values)
   double p0 = 0.3;  ///< probability of a uniform choice
   std::uint64_t glob_best_freq =
@@ -126,8 +128,10 @@ decltype(auto) with_variant_policies(const Parameters& p, double rho, F&& f) {
     case Variant::acs:
       return f(PseudoRandomProportional{p.q0}, AcsUpdate{rho, p.xi});
     case Variant::mmas: {
-      return f(RandomProportional{},
-               MaxMinUpdate({.rho = rho, .p_best = p.p_best, .reinitialize = p.restarts}));
+      return f(RandomProportional{}, MaxMinUpdate({.rho = rho,
+                                                   .p_best = p.p_best,
+                                                   .reinitialize = p.restarts,
+                                                   .restart_stagnant = p.restart_stagnant}));
     }
     case Variant::hybrid:
       return f(UniformExploration{p.p0},

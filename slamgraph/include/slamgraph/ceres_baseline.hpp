@@ -12,6 +12,8 @@
 //   robust  each block under the Welsch-type loss rho(s) = 2 (1 - exp(-s / 2)), so Ceres
 //           minimises 1/2 sum rho(s) = sum (1 - exp(-s / 2)), exactly the weight of eq. (10).
 
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -71,5 +73,18 @@ CeresResult optimize_pose_graph(const PoseGraph& graph, std::span<const Pose2> i
 
 /// r^T Omega r of every edge at the vertex poses `poses` (the residual of optimize_pose_graph).
 std::vector<double> edge_chi2(const PoseGraph& graph, std::span<const Pose2> poses);
+
+/// How well the poses fit the edges against the noise the graph states.
+struct ResidualSummary {
+  double chi2 = 0.0;                    ///< sum of r^T Omega r over the edges (edge_chi2)
+  std::int64_t degrees_of_freedom = 0;  ///< 3 per edge - 3 per vertex but vertex 0 (held)
+  /// chi2 / degrees of freedom, the a posteriori variance factor of a least-squares solution:
+  /// about 1 when the graph states its noise as it is, 1/k^2 when k times too wide; none
+  /// without redundancy (no more edges than a spanning chain).
+  std::optional<double> variance_factor;
+};
+
+/// The residual summary of the poses on the graph (a connected graph: a chain at least).
+ResidualSummary residual_summary(const PoseGraph& graph, std::span<const Pose2> poses);
 
 }  // namespace antslam::slam
