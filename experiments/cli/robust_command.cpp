@@ -90,6 +90,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
         {"cauchy_scale", o.s.cauchy_scale},
         {"dcs_phi", o.s.dcs_phi},
         {"check_clique", o.s.check_clique},
+        {"recalibrate", o.s.recalibrate},
         {"gnc_mu_factor", o.s.gnc.mu_factor},
         {"exact_time_limit_s", o.s.exact.time_limit_s},
         {"aco_variant", o.variant},
@@ -114,6 +115,11 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
                    {"optimal", r.clique->clique.optimal},
                    {"consistent_pairs", r.clique->consistent_pairs},
                    {"work", r.clique->work}};
+  }
+  if (r.core) {
+    j["recalibration"] = {{"variance_factor", *r.variance_factor},
+                          {"core_size", r.core->clique.vertices.size()},
+                          {"core_optimal", r.core->clique.optimal}};
   }
   if (r.method == slam::RobustMethod::gnc) j["gnc_steps"] = r.gnc_steps;
   j["residuals"] = {{"chi2", fit.chi2},
@@ -231,6 +237,10 @@ void add_robust_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-clique-check", o->no_clique_check,
                 "pcm-*: accept the clique as it is, without its joint check (the published PCM)");
+  cmd->add_flag("--recalibrate", o->s.recalibrate,
+                "pcm-*: after the check, a second clique at the noise the checked graph shows (its "
+                "variance factor f), DCS on both cliques' closures from the map of those they "
+                "share, and the test at that noise");
   cmd->add_option("--variant", o->variant, "pcm-aco: ACO variant")
       ->check(CLI::IsMember(aco::variant_names()))
       ->capture_default_str();

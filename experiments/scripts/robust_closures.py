@@ -45,6 +45,8 @@ def options():
                    help="pcm-aco: its --plateau-steps (default: the program's)")
     p.add_argument("--restart-stagnant", type=integer_at_least(0),
                    help="pcm-aco: its --restart-stagnant (default: the program's)")
+    p.add_argument("--recalibrate", action="store_true",
+                   help="pcm-*: the recalibrated check (antslam robust --recalibrate)")
     count_option(p, "--seeds", "seeds 1..N per count and kind", 10, 1)
     count_option(p, "--threads", "threads of the consistency and the ants", 2, 2)
     ranks_option(p)
@@ -119,8 +121,10 @@ def run_cases(args, cases):
     ant_options = [] if args.plateau_steps is None else ["--plateau-steps", args.plateau_steps]
     if args.restart_stagnant is not None:
         ant_options += ["--restart-stagnant", args.restart_stagnant]
+    pcm_options = ["--recalibrate"] if args.recalibrate else []
     run_batch(args, [["robust", spoiled, "--method", method, "--threads", args.threads, *refs,
-                      *(ant_options if method == "pcm-aco" else []), "-o", prefix]
+                      *(ant_options if method == "pcm-aco" else []),
+                      *(pcm_options if method.startswith("pcm") else []), "-o", prefix]
                      for spoiled, _, method, prefix, refs in todo], "robust")
     for _, _, _, prefix, _ in todo:
         for ext in (".g2o", ".accepted.txt"):

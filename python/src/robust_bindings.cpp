@@ -84,6 +84,7 @@ void bind_robust(py::module_& m) {
       .def_readwrite("cauchy_scale", &slam::RobustSettings::cauchy_scale)
       .def_readwrite("dcs_phi", &slam::RobustSettings::dcs_phi)
       .def_readwrite("check_clique", &slam::RobustSettings::check_clique)
+      .def_readwrite("recalibrate", &slam::RobustSettings::recalibrate)
       .def_property(
           "exact_time_limit_s", [](const slam::RobustSettings& s) { return s.exact.time_limit_s; },
           [](slam::RobustSettings& s, double seconds) { s.exact.time_limit_s = seconds; })
@@ -107,6 +108,16 @@ void bind_robust(py::module_& m) {
                              [](const RobustRun& r) -> py::object {
                                if (!r.result.clique) return py::none();
                                return py::cast(r.result.clique->clique);
+                             })
+      .def_property_readonly("variance_factor",
+                             [](const RobustRun& r) -> py::object {
+                               if (!r.result.variance_factor) return py::none();
+                               return py::cast(*r.result.variance_factor);
+                             })
+      .def_property_readonly("core",
+                             [](const RobustRun& r) -> py::object {
+                               if (!r.result.core) return py::none();
+                               return py::cast(r.result.core->clique);
                              })
       .def_property_readonly("consistent_pairs",
                              [](const RobustRun& r) -> py::object {

@@ -3,6 +3,8 @@
 // (clique/), then the joint check of the clique (robust.hpp, RobustSettings::check_clique) and
 // least squares on the odometry and the closures that pass it.
 
+#include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -69,6 +71,42 @@ void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, dou
     result.accepted[k] = result.accepted[k] && within[k];
 }
 
+/// The recalibrated check (robust.hpp): the variance factor f of the checked graph at the
+/// check's solution, the core clique at the noise divided by f, least squares on the closures
+/// of both cliques from the odometry, DCS on the closures of either from there, and the test at
+/// chi2 <= f c2. Skipped (f unset) when the checked graph has no redundancy or fits exactly.
+void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
+                        const std::vector<bool>& clique, const RobustSettings& settings,
+                        RobustResult& result) {
+  const std::optional<double> f =
+      residual_summary(kept_graph(graph, result), result.poses).variance_factor;
+  if (!f || !(*f > 0.0) || !std::isfinite(*f)) return;
+  result.variance_factor = f;
+  PoseGraph recalibrated = graph;
+  for (PoseGraphEdge& e : recalibrated.edges) e.information /= *f;
+  auto start = std::chrono::steady_clock::now();
+  const ConsistencyGraph consistency = pairwise_consistency(
+      recalibrated, result.split, {settings.inlier_confidence, settings.backend, settings.threads});
+  result.consistency_s += seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  result.core = maximum_consistent_set(consistency, result.method, settings);
+  result.clique_s += seconds_since(start);
+
+  const std::size_t m = clique.size();
+  std::vector<bool> both(m, false), either = clique;
+  for (const std::uint32_t k : result.core->clique.vertices) {
+    both[k] = clique[k];
+    either[k] = true;
+  }
+  optimize(graph, initial, edge_losses(graph, result.split, keep_only(both)), settings, result);
+  std::vector<EdgeLoss> loss = keep_only(either);
+  for (std::size_t k = 0; k < m; ++k)
+    if (either[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
+  optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
+  const std::vector<bool> within = closures_within(graph, result.split, result.poses, *f * c2);
+  for (std::size_t k = 0; k < m; ++k) result.accepted[k] = either[k] && within[k];
+}
+
 }  // namespace
 
 void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
@@ -87,7 +125,10 @@ void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c
     for (const std::uint32_t k : report.clique.vertices) result.accepted[k] = true;
     result.clique = report;
   }
+  const std::vector<bool> clique = result.accepted;
   if (settings.check_clique && m > 0) check_clique(graph, initial, c2, settings, result);
+  if (settings.check_clique && settings.recalibrate && m > 0)
+    recalibrated_check(graph, initial, c2, clique, settings, result);
   // From the odometry again: the check's solve can end in a wrong basin with right decisions.
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), settings,
            result);

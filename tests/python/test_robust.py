@@ -39,6 +39,16 @@ def test_pcm_keeps_every_true_closure_and_no_false_one(spoiled, method):
     assert r.clique.weight == 26 and r.consistent_pairs > 0
 
 
+def test_the_recalibrated_check_reports_its_factor_and_core(spoiled):
+    graph, false = spoiled
+    plain = antslam.slam.robust(graph, "pcm-aco")
+    r = antslam.slam.robust(graph, "pcm-aco", recalibrate=True)
+    assert plain.variance_factor is None and plain.core is None
+    assert 0 < r.variance_factor < 1 and r.core.weight <= len(r.closures)
+    false_pairs = {tuple(p) for p in false.tolist()}
+    assert not {tuple(c) for c in r.closures[r.accepted].tolist()} & false_pairs
+
+
 def test_least_squares_accepts_everything(spoiled):
     r = antslam.slam.robust(spoiled[0], "ls")
     assert r.accepted.all() and r.clique is None and r.consistent_pairs is None

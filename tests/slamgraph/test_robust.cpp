@@ -141,6 +141,38 @@ TEST(Robust, TheJointCheckDropsAFalseClosureThatEveryPairwiseTestPasses) {
   }
 }
 
+TEST(Robust, TheRecalibratedCheckDropsAFalseClosureTheStatedNoiseHides) {
+  // The graph of the test above (noise stated twenty times its real deviation) with a false
+  // closure only 5 m off: "vertex 105 is 5 m further along from vertex 5 than it is". At the
+  // stated noise it passes every test and the joint check keeps it; the checked graph's variance
+  // factor is about (1/20)^2, at that noise it fails, and the map is the outlier-free one.
+  testing::TrueGraph t = testing::square_laps(3, 10, 2, 2.0, 11, 0.05);
+  const std::vector<Pose2> outlier_free =
+      solve_robust(t.graph, RobustMethod::ls, {}, "outlier-free").poses;
+  const Pose2 truth = t.truth[5].inverse() * t.truth[105];
+  t.graph.edges.push_back({5, 105, truth * Pose2{5.0, 0.0, 0.0}, t.graph.edges.back().information});
+  const std::size_t closures = split_chain(t.graph, "t").closures.size();
+  std::vector<bool> outlier(closures, false);
+  outlier.back() = true;
+  RobustSettings recalibrate;
+  recalibrate.recalibrate = true;
+  for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
+    const RobustResult checked = solve_robust(t.graph, method, {}, "t");
+    EXPECT_TRUE(checked.accepted.back()) << to_string(method);
+    EXPECT_FALSE(checked.variance_factor);
+    EXPECT_GT(max_position_error(checked.poses, outlier_free), 0.05) << to_string(method);
+
+    const RobustResult r = solve_robust(t.graph, method, recalibrate, "t");
+    const AcceptanceScores sc = score_acceptance(r.accepted, outlier);
+    EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method);
+    EXPECT_EQ(*sc.recall, 1.0) << to_string(method);
+    ASSERT_TRUE(r.variance_factor && r.core);
+    EXPECT_GT(*r.variance_factor, 0.25 * 0.0025);
+    EXPECT_LT(*r.variance_factor, 4.0 * 0.0025);
+    EXPECT_LT(max_position_error(r.poses, outlier_free), 1e-4) << to_string(method);
+  }
+}
+
 TEST(Robust, LeastSquaresBendsGncAndDcsRecover) {
   const Spoiled s = spoiled(OutlierKind::random, 5);
   const RobustResult ls = solve_robust(s.spoiled.graph, RobustMethod::ls, {}, "spoiled");
@@ -209,6 +241,10 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
   EXPECT_THROW(solve_robust(t.graph, RobustMethod::ls, s, "t"), std::invalid_argument);
   s = {};
   s.check_start_iterations = 0;
+  EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  s = {};
+  s.recalibrate = true;
+  s.check_clique = false;  // the recalibrated check follows the joint check
   EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
 }
 

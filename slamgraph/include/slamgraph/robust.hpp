@@ -17,6 +17,13 @@
 // chi-square test: the pairwise tests over long odometry spans have little power, and a clique
 // can hold false closures consistent with every other one pairwise but not with the map they
 // make together. Without it the PCM methods are the published PCM.
+// The recalibrated check (recalibrate, after the joint check) measures the noise the checked
+// graph shows, its a posteriori variance factor f (ResidualSummary), searches a second clique
+// (the "core") with every information matrix divided by f, solves least squares on the closures
+// both cliques hold, then DCS on the closures either holds from that map, and accepts those
+// whose residual passes the test at the recalibrated noise (chi2 <= f c2). Graphs that state
+// their noise wider than it is give the pairwise test little power; at the noise they show, a
+// false closure that agrees with the odometry over a long span rarely agrees with the core.
 // Odometry (edges between consecutive vertices) is always kept with the squared loss. A closure
 // counts as accepted by ls (every closure), by cauchy and dcs when its final residual passes the
 // chi-square test of `inlier_confidence`, by gnc when its final weight is above 1/2, and by the
@@ -77,6 +84,7 @@ struct RobustSettings {
   double dcs_phi = 1.0;             ///< Phi of DCS, chi^2 units (Agarwal et al. 2013 use 1)
   bool check_clique = true;         ///< pcm-*: the joint check of the clique (above)
   int check_start_iterations = 10;  ///< pcm-*: least-squares iterations that start the check
+  bool recalibrate = false;         ///< pcm-*: the recalibrated check after the joint check
   GncSettings gnc;                  ///< graduated non-convexity
   clique::ExactSettings exact;      ///< pcm-exact: branch and bound (60 s budget)
   clique::AcoSearchSettings aco;    ///< pcm-aco: variant, ants, termination (backend: below)
@@ -98,6 +106,8 @@ struct RobustResult {
   std::vector<Pose2> poses;                ///< optimised vertex poses
   std::vector<bool> accepted;              ///< per loop closure, in split.closures order
   std::optional<CliqueReport> clique;      ///< PCM methods only
+  std::optional<double> variance_factor;   ///< recalibrated check: the factor f it used
+  std::optional<CliqueReport> core;        ///< recalibrated check: the clique at the noise / f
   std::size_t gnc_steps = 0;               ///< gnc only: graduation steps run
   double consistency_s = 0.0;              ///< wall-clock seconds: pairwise consistency
   double clique_s = 0.0;                   ///< maximum clique
