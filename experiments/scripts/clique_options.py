@@ -35,7 +35,7 @@ import numpy as np
 
 from experiment_common import (count_option, header, integer_at_least, markdown_table, parser,
                                plt, progress, save_csv, save_figure, save_table)
-from simulated_graphs import manhattan_graph
+from simulated_graphs import WORLD_SIDE, manhattan_graph
 
 try:
     import antslam
@@ -51,7 +51,7 @@ OPTIONS = {"plateau_steps": ("plateau steps", int),
 RANDOM = [("sparse", 1000, 0.05), ("medium", 400, 0.5), ("dense", 200, 0.9),
           ("large-dense", 1000, 0.9)]
 # manhattan: (poses, world side), stated noise scales, false closure counts
-MANHATTAN = [(800, 60), (1000, 12), (3500, 25)]
+MANHATTAN = [(poses, WORLD_SIDE[poses]) for poses in (800, 1000, 3500)]
 STATED = [0.5, 1.0, 6.0]
 COUNTS = [100, 1000]
 OUTLIER_KINDS = ["random", "local", "random-group", "local-group"]

@@ -21,7 +21,7 @@ import numpy as np
 
 from experiment_common import (count_option, header, integer_at_least, markdown_table, parser,
                                progress, save_csv, save_table)
-from simulated_graphs import manhattan_graph
+from simulated_graphs import WORLD_SIDE, manhattan_graph
 
 try:
     import antslam
@@ -29,12 +29,9 @@ except ImportError:
     sys.exit("robust_simulated.py: error: the antslam Python module is not importable (build "
              "target antslam_python, then PYTHONPATH=build/python)")
 
-WORLD = {1000: 12, 3500: 25}  # world side for each size: about as many closures per pose
-
-
 def main():
     p = parser(__doc__, "robust-simulated")
-    p.add_argument("--poses", type=int, nargs="+", choices=sorted(WORLD), default=[1000, 3500])
+    p.add_argument("--poses", type=int, nargs="+", choices=[1000, 3500], default=[1000, 3500])
     p.add_argument("--stated", type=float, nargs="+", default=[1.0, 6.0],
                    help="stated noise / real noise (standard deviations)")
     p.add_argument("--kinds", nargs="+", default=["random", "random-group", "local-group"],
@@ -52,7 +49,7 @@ def main():
         for stated in args.stated:
             for kind in args.kinds:
                 for seed in range(1, args.graphs + 1):
-                    g = manhattan_graph(antslam, poses, 100 + seed, world=WORLD[poses],
+                    g = manhattan_graph(antslam, poses, 100 + seed, world=WORLD_SIDE[poses],
                                         stated_scale=stated)
                     clean = antslam.slam.robust(g, "ls").poses
                     spoiled, false = antslam.slam.add_outliers(g, 1000, kind=kind, seed=seed)

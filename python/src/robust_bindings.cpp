@@ -4,6 +4,7 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +45,12 @@ py::array_t<bool> bool_array(const std::vector<bool>& values) {
   auto v = out.mutable_unchecked<1>();
   for (std::size_t k = 0; k < values.size(); ++k) v(static_cast<py::ssize_t>(k)) = values[k];
   return out;
+}
+
+/// A clique stage's clique, if it ran (None in Python).
+std::optional<clique::CliqueResult> clique_of(const std::optional<slam::CliqueReport>& report) {
+  if (!report) return std::nullopt;
+  return report->clique;
 }
 
 /// The result with the graph's closures as vertex pairs, in split.closures order.
@@ -105,24 +112,14 @@ void bind_robust(py::module_& m) {
       .def_property_readonly("accepted",
                              [](const RobustRun& r) { return bool_array(r.result.accepted); })
       .def_property_readonly("clique",
-                             [](const RobustRun& r) -> py::object {
-                               if (!r.result.clique) return py::none();
-                               return py::cast(r.result.clique->clique);
-                             })
+                             [](const RobustRun& r) { return clique_of(r.result.clique); })
       .def_property_readonly("variance_factor",
-                             [](const RobustRun& r) -> py::object {
-                               if (!r.result.variance_factor) return py::none();
-                               return py::cast(*r.result.variance_factor);
-                             })
-      .def_property_readonly("core",
-                             [](const RobustRun& r) -> py::object {
-                               if (!r.result.core) return py::none();
-                               return py::cast(r.result.core->clique);
-                             })
+                             [](const RobustRun& r) { return r.result.variance_factor; })
+      .def_property_readonly("core", [](const RobustRun& r) { return clique_of(r.result.core); })
       .def_property_readonly("consistent_pairs",
-                             [](const RobustRun& r) -> py::object {
-                               if (!r.result.clique) return py::none();
-                               return py::cast(r.result.clique->consistent_pairs);
+                             [](const RobustRun& r) -> std::optional<std::size_t> {
+                               if (!r.result.clique) return std::nullopt;
+                               return r.result.clique->consistent_pairs;
                              })
       .def_property_readonly("gnc_steps", [](const RobustRun& r) { return r.result.gnc_steps; })
       .def_property_readonly("consistency_s",

@@ -51,6 +51,32 @@ std::vector<EdgeLoss> keep_only(const std::vector<bool>& kept) {
   return loss;
 }
 
+/// The consistency graph of `tested` (the graph, or the graph at another noise) and its maximum
+/// clique by the method of `result`, their times added to result's.
+CliqueReport maximum_clique_of(const PoseGraph& tested, const RobustSettings& settings,
+                               RobustResult& result) {
+  auto start = std::chrono::steady_clock::now();
+  const ConsistencyGraph consistency = pairwise_consistency(
+      tested, result.split, {settings.inlier_confidence, settings.backend, settings.threads});
+  result.consistency_s += seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  CliqueReport report = maximum_consistent_set(consistency, result.method, settings);
+  result.clique_s += seconds_since(start);
+  return report;
+}
+
+/// DCS on the `candidates` from result.poses (the other closures left out); accepted: the
+/// candidates whose residual then passes chi2 <= c2 (`candidates` may be result.accepted).
+void accept_after_dcs(const PoseGraph& graph, const std::vector<bool>& candidates, double c2,
+                      const RobustSettings& settings, RobustResult& result) {
+  std::vector<EdgeLoss> loss = keep_only(candidates);
+  for (std::size_t k = 0; k < loss.size(); ++k)
+    if (candidates[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
+  optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
+  const std::vector<bool> within = closures_within(graph, result.split, result.poses, c2);
+  for (std::size_t k = 0; k < within.size(); ++k) result.accepted[k] = candidates[k] && within[k];
+}
+
 /// The joint check of the clique: least squares on the clique (check_start_iterations
 /// iterations: a start, not a solution), DCS on the clique's closures from there, and a clique
 /// closure stays accepted when its residual passes the chi-square test. Pairwise tests over long
@@ -62,13 +88,7 @@ void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, dou
   start.ceres.max_iterations = settings.check_start_iterations;
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), start,
            result);
-  std::vector<EdgeLoss> loss = keep_only(result.accepted);
-  for (std::size_t k = 0; k < loss.size(); ++k)
-    if (result.accepted[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
-  optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
-  const std::vector<bool> within = closures_within(graph, result.split, result.poses, c2);
-  for (std::size_t k = 0; k < within.size(); ++k)
-    result.accepted[k] = result.accepted[k] && within[k];
+  accept_after_dcs(graph, result.accepted, c2, settings, result);
 }
 
 /// The recalibrated check (robust.hpp): the variance factor f of the checked graph at the
@@ -84,27 +104,15 @@ void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initia
   result.variance_factor = f;
   PoseGraph recalibrated = graph;
   for (PoseGraphEdge& e : recalibrated.edges) e.information /= *f;
-  auto start = std::chrono::steady_clock::now();
-  const ConsistencyGraph consistency = pairwise_consistency(
-      recalibrated, result.split, {settings.inlier_confidence, settings.backend, settings.threads});
-  result.consistency_s += seconds_since(start);
-  start = std::chrono::steady_clock::now();
-  result.core = maximum_consistent_set(consistency, result.method, settings);
-  result.clique_s += seconds_since(start);
+  result.core = maximum_clique_of(recalibrated, settings, result);
 
-  const std::size_t m = clique.size();
-  std::vector<bool> both(m, false), either = clique;
+  std::vector<bool> both(clique.size(), false), either = clique;
   for (const std::uint32_t k : result.core->clique.vertices) {
     both[k] = clique[k];
     either[k] = true;
   }
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(both)), settings, result);
-  std::vector<EdgeLoss> loss = keep_only(either);
-  for (std::size_t k = 0; k < m; ++k)
-    if (either[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
-  optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
-  const std::vector<bool> within = closures_within(graph, result.split, result.poses, *f * c2);
-  for (std::size_t k = 0; k < m; ++k) result.accepted[k] = either[k] && within[k];
+  accept_after_dcs(graph, either, *f * c2, settings, result);
 }
 
 }  // namespace
@@ -114,16 +122,8 @@ void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c
   const std::size_t m = result.split.closures.size();
   result.accepted.assign(m, false);
   if (m > 0) {
-    auto start = std::chrono::steady_clock::now();
-    const ConsistencyGraph consistency = pairwise_consistency(
-        graph, result.split, {settings.inlier_confidence, settings.backend, settings.threads});
-    result.consistency_s = seconds_since(start);
-
-    start = std::chrono::steady_clock::now();
-    const CliqueReport report = maximum_consistent_set(consistency, result.method, settings);
-    result.clique_s = seconds_since(start);
-    for (const std::uint32_t k : report.clique.vertices) result.accepted[k] = true;
-    result.clique = report;
+    result.clique = maximum_clique_of(graph, settings, result);
+    for (const std::uint32_t k : result.clique->clique.vertices) result.accepted[k] = true;
   }
   const std::vector<bool> clique = result.accepted;
   if (settings.check_clique && m > 0) check_clique(graph, initial, c2, settings, result);
