@@ -90,6 +90,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
         {"cauchy_scale", o.s.cauchy_scale},
         {"dcs_phi", o.s.dcs_phi},
         {"check_clique", o.s.check_clique},
+        {"check_phi", o.s.check_phi},
         {"recalibrate", o.s.recalibrate},
         {"gnc_mu_factor", o.s.gnc.mu_factor},
         {"exact_time_limit_s", o.s.exact.time_limit_s},
@@ -116,6 +117,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
                    {"consistent_pairs", r.clique->consistent_pairs},
                    {"work", r.clique->work}};
   }
+  if (r.check_phi) j["check"] = {{"dcs_phi", *r.check_phi}};
   if (r.core) {
     j["recalibration"] = {{"variance_factor", *r.variance_factor},
                           {"core_size", r.core->clique.vertices.size()},
@@ -237,6 +239,12 @@ void add_robust_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--no-clique-check", o->no_clique_check,
                 "pcm-*: accept the clique as it is, without its joint check (the published PCM)");
+  cmd->add_option("--check-phi", o->s.check_phi,
+                  "pcm-*: Phi of the joint check's DCS in multiples of the clique closures' median "
+                  "squared distance to their odometry (the noise the graph shows); 0 = DCS's Phi "
+                  "at the stated noise")
+      ->check(finite_in(0.0, 1e9))
+      ->capture_default_str();
   cmd->add_flag("--recalibrate", o->s.recalibrate,
                 "pcm-*: after the check, a second clique at the noise the checked graph shows (its "
                 "variance factor f), DCS on both cliques' closures from the map of those they "

@@ -47,6 +47,9 @@ def options():
                    help="pcm-aco: its --restart-stagnant (default: the program's)")
     p.add_argument("--recalibrate", action="store_true",
                    help="pcm-*: the recalibrated check (antslam robust --recalibrate)")
+    p.add_argument("--check-phi", type=float,
+                   help="pcm-*: the check's Phi from the noise the clique shows (antslam robust "
+                        "--check-phi; default: the program's)")
     count_option(p, "--seeds", "seeds 1..N per count and kind", 10, 1)
     count_option(p, "--threads", "threads of the consistency and the ants", 2, 2)
     ranks_option(p)
@@ -58,6 +61,8 @@ def options():
                    help="rows of an earlier robust.csv (such as docs/figures/results-robust.csv) "
                         "to tabulate with this call's runs; a case run here replaces its row")
     args = p.parse_args()
+    if args.check_phi is not None and not 0 <= args.check_phi < float("inf"):
+        p.error(f"--check-phi: {args.check_phi} is not a finite number >= 0")
     if args.earlier:
         args.earlier_rows = earlier_rows(p, args.earlier)
     defaults = QUICK if args.quick else FULL
@@ -122,6 +127,8 @@ def run_cases(args, cases):
     if args.restart_stagnant is not None:
         ant_options += ["--restart-stagnant", args.restart_stagnant]
     pcm_options = ["--recalibrate"] if args.recalibrate else []
+    if args.check_phi is not None:
+        pcm_options += ["--check-phi", args.check_phi]
     run_batch(args, [["robust", spoiled, "--method", method, "--threads", args.threads, *refs,
                       *(ant_options if method == "pcm-aco" else []),
                       *(pcm_options if method.startswith("pcm") else []), "-o", prefix]

@@ -158,7 +158,8 @@ _OUTLIERS = {"group_size": "group_size", "local_window": "local_window"}
 _ROBUST = dict(
     {name: "aco.parameters." + attribute for name, attribute in _options.ENGINE.items()},
     confidence="inlier_confidence", cauchy_scale="cauchy_scale", dcs_phi="dcs_phi",
-    check_clique="check_clique", recalibrate="recalibrate", exact_time_limit="exact_time_limit_s",
+    check_clique="check_clique", check_phi="check_phi", recalibrate="recalibrate",
+    exact_time_limit="exact_time_limit_s",
     iterations="aco.termination.max_iterations", plateau_steps="aco.plateau_steps",
     backend="backend", threads="threads")
 
@@ -195,11 +196,12 @@ def robust(graph, method="pcm-aco", *, variant=None, seed=1, **options):
     """Decides which loop closures of the graph to trust and optimises it, as `antslam robust`
     does (method: ls, cauchy, dcs, gnc, pcm-exact, pcm-aco; docs/robust-closures.md). Options
     as the program's: confidence, cauchy_scale, dcs_phi, check_clique (False: the published
-    PCM), recalibrate (the recalibrated check), exact_time_limit (s), and for pcm-aco variant,
-    seed, iterations, plateau_steps and the engine's parameters (ants, rho, ...); backend,
-    threads. The result: poses (n, 3), closures ((m, 2) vertex pairs of the loop closures, in
-    input order), accepted (m booleans), clique, variance_factor and core (recalibrated check)
-    (PCM methods), times; kept_graph(graph) is the graph `antslam robust` writes."""
+    PCM), check_phi (the check's DCS Phi in multiples of the clique's median unary distance; 0:
+    dcs_phi), recalibrate (the recalibrated check), exact_time_limit (s), and for pcm-aco
+    variant, seed, iterations, plateau_steps and the engine's parameters (ants, rho, ...);
+    backend, threads. The result: poses (n, 3), closures ((m, 2) vertex pairs of the loop
+    closures, in input order), accepted (m booleans), clique, check_phi (the Phi the check
+    used), variance_factor and core (recalibrated check) (PCM methods), times; kept_graph(graph) is the graph `antslam robust` writes."""
     settings = _core.slam.RobustSettings()
     if variant is not None:
         settings.aco.parameters.variant = variant

@@ -91,6 +91,7 @@ void bind_robust(py::module_& m) {
       .def_readwrite("cauchy_scale", &slam::RobustSettings::cauchy_scale)
       .def_readwrite("dcs_phi", &slam::RobustSettings::dcs_phi)
       .def_readwrite("check_clique", &slam::RobustSettings::check_clique)
+      .def_readwrite("check_phi", &slam::RobustSettings::check_phi)
       .def_readwrite("recalibrate", &slam::RobustSettings::recalibrate)
       .def_property(
           "exact_time_limit_s", [](const slam::RobustSettings& s) { return s.exact.time_limit_s; },
@@ -113,6 +114,7 @@ void bind_robust(py::module_& m) {
                              [](const RobustRun& r) { return bool_array(r.result.accepted); })
       .def_property_readonly("clique",
                              [](const RobustRun& r) { return clique_of(r.result.clique); })
+      .def_property_readonly("check_phi", [](const RobustRun& r) { return r.result.check_phi; })
       .def_property_readonly("variance_factor",
                              [](const RobustRun& r) { return r.result.variance_factor; })
       .def_property_readonly("core", [](const RobustRun& r) { return clique_of(r.result.core); })

@@ -3,6 +3,7 @@
 // (clique/), then the joint check of the clique (robust.hpp, RobustSettings::check_clique) and
 // least squares on the odometry and the closures that pass it.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -65,13 +66,27 @@ CliqueReport maximum_clique_of(const PoseGraph& tested, const RobustSettings& se
   return report;
 }
 
+/// The median squared distance of the unary cycles (a closure and the odometry between its
+/// ends; CycleTest) of the closures marked in `closures`, none if there are none.
+std::optional<double> median_unary_distance(const PoseGraph& graph, const ChainSplit& split,
+                                            const std::vector<bool>& closures) {
+  const CycleTest test(graph, split);
+  std::vector<double> d2;
+  for (std::size_t k = 0; k < closures.size(); ++k)
+    if (closures[k]) d2.push_back(test.squared_distance(k));
+  if (d2.empty()) return std::nullopt;
+  const auto middle = d2.begin() + static_cast<std::ptrdiff_t>(d2.size() / 2);
+  std::nth_element(d2.begin(), middle, d2.end());
+  return *middle;
+}
+
 /// DCS on the `candidates` from result.poses (the other closures left out); accepted: the
 /// candidates whose residual then passes chi2 <= c2 (`candidates` may be result.accepted).
 void accept_after_dcs(const PoseGraph& graph, const std::vector<bool>& candidates, double c2,
-                      const RobustSettings& settings, RobustResult& result) {
+                      double phi, const RobustSettings& settings, RobustResult& result) {
   std::vector<EdgeLoss> loss = keep_only(candidates);
   for (std::size_t k = 0; k < loss.size(); ++k)
-    if (candidates[k]) loss[k] = {EdgeLoss::Kind::dcs, settings.dcs_phi};
+    if (candidates[k]) loss[k] = {EdgeLoss::Kind::dcs, phi};
   optimize(graph, result.poses, edge_losses(graph, result.split, loss), settings, result);
   const std::vector<bool> within = closures_within(graph, result.split, result.poses, c2);
   for (std::size_t k = 0; k < within.size(); ++k) result.accepted[k] = candidates[k] && within[k];
@@ -82,13 +97,21 @@ void accept_after_dcs(const PoseGraph& graph, const std::vector<bool>& candidate
 /// closure stays accepted when its residual passes the chi-square test. Pairwise tests over long
 /// odometry spans have little power, so a clique can hold false closures that agree with every
 /// other one pairwise but not with the map the others make together.
+/// DCS's Phi: settings.dcs_phi, or with check_phi > 0 that many times the clique's median unary
+/// distance (robust.hpp); result.check_phi records it.
 void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
                   const RobustSettings& settings, RobustResult& result) {
   RobustSettings start = settings;
   start.ceres.max_iterations = settings.check_start_iterations;
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), start,
            result);
-  accept_after_dcs(graph, result.accepted, c2, settings, result);
+  result.check_phi = settings.dcs_phi;
+  if (settings.check_phi > 0.0) {
+    const std::optional<double> median =
+        median_unary_distance(graph, result.split, result.accepted);
+    if (median && *median > 0.0) result.check_phi = settings.check_phi * *median;
+  }
+  accept_after_dcs(graph, result.accepted, c2, *result.check_phi, settings, result);
 }
 
 /// The recalibrated check (robust.hpp): the variance factor f of the checked graph at the
@@ -112,7 +135,7 @@ void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initia
     either[k] = true;
   }
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(both)), settings, result);
-  accept_after_dcs(graph, either, *f * c2, settings, result);
+  accept_after_dcs(graph, either, *f * c2, *result.check_phi, settings, result);
 }
 
 }  // namespace

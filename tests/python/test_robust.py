@@ -49,6 +49,19 @@ def test_the_recalibrated_check_reports_its_factor_and_core(spoiled):
     assert not {tuple(c) for c in r.closures[r.accepted].tolist()} & false_pairs
 
 
+def test_the_check_reports_the_phi_it_took_from_the_noise_the_clique_shows(spoiled):
+    graph, _ = spoiled
+    r = antslam.slam.robust(graph, "pcm-aco", check_phi=2.0)
+    fixed = antslam.slam.robust(graph, "pcm-aco", check_phi=0, dcs_phi=0.5)
+    assert fixed.check_phi == 0.5
+    assert antslam.slam.robust(graph, "pcm-aco").check_phi == 1.0  # DCS's Phi by default
+    assert r.check_phi > 0 and r.check_phi == pytest.approx(
+        2 * antslam.slam.robust(graph, "pcm-aco", check_phi=1).check_phi)
+    assert antslam.slam.robust(graph, "ls").check_phi is None
+    with pytest.raises(ValueError, match="check's Phi"):
+        antslam.slam.robust(graph, "pcm-aco", check_phi=-1)
+
+
 def test_least_squares_accepts_everything(spoiled):
     r = antslam.slam.robust(spoiled[0], "ls")
     assert r.accepted.all() and r.clique is None and r.consistent_pairs is None

@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "pose_graphs.hpp"
 #include "slamgraph/ceres_baseline.hpp"
+#include "slamgraph/consistency.hpp"
 #include "slamgraph/outliers.hpp"
 #include "slamgraph/robust.hpp"
 #include "support.hpp"
@@ -141,11 +143,13 @@ TEST(Robust, TheJointCheckDropsAFalseClosureThatEveryPairwiseTestPasses) {
   }
 }
 
-TEST(Robust, TheRecalibratedCheckDropsAFalseClosureTheStatedNoiseHides) {
+TEST(Robust, AFalseClosureTheStatedNoiseHidesFailsTheChecksAtTheNoiseTheGraphShows) {
   // The graph of the test above (noise stated twenty times its real deviation) with a false
-  // closure only 5 m off: "vertex 105 is 5 m further along from vertex 5 than it is". At the
-  // stated noise it passes every test and the joint check keeps it; the checked graph's variance
-  // factor is about (1/20)^2, at that noise it fails, and the map is the outlier-free one.
+  // closure only 5 m off: "vertex 105 is 5 m further along from vertex 5 than it is". With DCS's
+  // Phi at the stated noise (the default) the joint check keeps it: it passes every test there.
+  // The checked graph's variance factor is about (1/20)^2, and at that noise the recalibrated
+  // check drops it; so does the joint check when its Phi is taken from the noise the clique
+  // shows (check_phi 1). Either way the map is the outlier-free one.
   testing::TrueGraph t = testing::square_laps(3, 10, 2, 2.0, 11, 0.05);
   const std::vector<Pose2> outlier_free =
       solve_robust(t.graph, RobustMethod::ls, {}, "outlier-free").poses;
@@ -156,6 +160,8 @@ TEST(Robust, TheRecalibratedCheckDropsAFalseClosureTheStatedNoiseHides) {
   outlier.back() = true;
   RobustSettings recalibrate;
   recalibrate.recalibrate = true;
+  RobustSettings shown;
+  shown.check_phi = 1.0;
   for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
     const RobustResult checked = solve_robust(t.graph, method, {}, "t");
     EXPECT_TRUE(checked.accepted.back()) << to_string(method);
@@ -163,13 +169,66 @@ TEST(Robust, TheRecalibratedCheckDropsAFalseClosureTheStatedNoiseHides) {
     EXPECT_GT(max_position_error(checked.poses, outlier_free), 0.05) << to_string(method);
 
     const RobustResult r = solve_robust(t.graph, method, recalibrate, "t");
-    const AcceptanceScores sc = score_acceptance(r.accepted, outlier);
-    EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method);
-    EXPECT_EQ(*sc.recall, 1.0) << to_string(method);
     ASSERT_TRUE(r.variance_factor && r.core);
     EXPECT_GT(*r.variance_factor, 0.25 * 0.0025);
     EXPECT_LT(*r.variance_factor, 4.0 * 0.0025);
-    EXPECT_LT(max_position_error(r.poses, outlier_free), 1e-4) << to_string(method);
+    const RobustResult at_shown_noise = solve_robust(t.graph, method, shown, "t");
+    for (const RobustResult* x : {&r, &at_shown_noise}) {
+      const AcceptanceScores sc = score_acceptance(x->accepted, outlier);
+      EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method);
+      EXPECT_EQ(*sc.recall, 1.0) << to_string(method);
+      EXPECT_LT(max_position_error(x->poses, outlier_free), 1e-4) << to_string(method);
+    }
+  }
+}
+
+TEST(Robust, TheCheckCanTakeItsPhiFromTheNoiseTheCliqueShows) {
+  // check_phi > 0: Phi of the check's DCS = check_phi x the median over the clique's closures of
+  // the squared distance of the cycle each closes with the odometry, recomputed here by hand; on
+  // the same graph stating its noise 20 times wider, that median and Phi are about 400 times
+  // smaller. check_phi 0 (the default): DCS's own Phi.
+  const testing::TrueGraph honest = testing::square_laps(3, 10, 2, 0.1, 4, 1.0);
+  testing::TrueGraph overstated = honest;
+  for (PoseGraphEdge& e : overstated.graph.edges) e.information /= 400.0;
+  RobustSettings settings;
+  settings.check_phi = 2.5;
+  std::vector<double> medians;
+  for (const PoseGraph* graph : {&honest.graph, &std::as_const(overstated.graph)}) {
+    const RobustResult r = solve_robust(*graph, RobustMethod::pcm_aco, settings, "t");
+    const CycleTest test(*graph, r.split);
+    std::vector<double> d2;
+    for (const std::uint32_t k : r.clique->clique.vertices) d2.push_back(test.squared_distance(k));
+    std::sort(d2.begin(), d2.end());
+    ASSERT_GE(d2.size(), 20U);
+    medians.push_back(d2[d2.size() / 2]);
+    ASSERT_TRUE(r.check_phi);
+    EXPECT_DOUBLE_EQ(*r.check_phi, 2.5 * medians.back());
+  }
+  EXPECT_GT(medians[0] / medians[1], 300.0);
+  EXPECT_LT(medians[0] / medians[1], 500.0);
+  RobustSettings fixed;
+  fixed.dcs_phi = 0.7;
+  EXPECT_EQ(solve_robust(honest.graph, RobustMethod::pcm_aco, fixed, "t").check_phi, 0.7);
+}
+
+TEST(Robust, OnAGraphStatingItsNoiseAsItIsTheCheckAtTheNoiseShownKeepsTheRightClosures) {
+  // No false closure, noise as stated: DCS's fixed Phi of 1 scales down closures whose chi2 is
+  // about its expected 3, the map drifts towards the odometry, and right closures fail the test;
+  // with Phi from the noise the clique shows (check_phi 1) they keep their weight and pass.
+  const testing::TrueGraph t = testing::square_laps(4, 10, 1, 0.1, 6, 1.0);
+  RobustSettings shown;
+  shown.check_phi = 1.0;
+  const auto kept_of_clique = [](const RobustResult& r) {
+    return static_cast<double>(std::count(r.accepted.begin(), r.accepted.end(), true)) /
+           static_cast<double>(r.clique->clique.vertices.size());
+  };
+  for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
+    const RobustResult r = solve_robust(t.graph, method, shown, "t");
+    ASSERT_GE(r.clique->clique.vertices.size(), 200U);
+    EXPECT_GT(kept_of_clique(r), 0.95) << to_string(method);  // 220 of 228
+    const RobustResult f = solve_robust(t.graph, method, {}, "t");
+    EXPECT_EQ(f.clique->clique.vertices, r.clique->clique.vertices);
+    EXPECT_LT(kept_of_clique(f), 0.93) << to_string(method);  // 207 and 205 of 228
   }
 }
 
@@ -242,6 +301,11 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
   s = {};
   s.check_start_iterations = 0;
   EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  for (const double phi : {-1.0, std::nan("")}) {
+    s = {};
+    s.check_phi = phi;
+    EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  }
   s = {};
   s.recalibrate = true;
   s.check_clique = false;  // the recalibrated check follows the joint check

@@ -16,7 +16,11 @@
 // squares iterations on them, and keeps the clique closures whose residual then passes the
 // chi-square test: the pairwise tests over long odometry spans have little power, and a clique
 // can hold false closures consistent with every other one pairwise but not with the map they
-// make together. Without it the PCM methods are the published PCM.
+// make together. Without it the PCM methods are the published PCM. Its DCS uses DCS's Phi
+// (dcs_phi, at the stated noise) unless check_phi > 0: then Phi is check_phi times the median,
+// over the clique's closures, of the squared Mahalanobis distance of the cycle each closes with
+// the odometry (the unary test of consistency.hpp), which scales with the stated information as
+// chi2 does (docs/robust-closures.md: better on generated graphs, mixed on the public ones).
 // The recalibrated check (recalibrate, after the joint check) measures the noise the checked
 // graph shows, its a posteriori variance factor f (ResidualSummary), searches a second clique
 // (the "core") with every information matrix divided by f, solves least squares on the closures
@@ -83,6 +87,8 @@ struct RobustSettings {
   double cauchy_scale = 1.0;        ///< c of the Cauchy loss, chi units (Ceres' CauchyLoss(1))
   double dcs_phi = 1.0;             ///< Phi of DCS, chi^2 units (Agarwal et al. 2013 use 1)
   bool check_clique = true;         ///< pcm-*: the joint check of the clique (above)
+  double check_phi = 0.0;           ///< pcm-*: Phi of the check's DCS, in multiples of the
+                                    ///< clique's median unary distance (above); 0: dcs_phi
   int check_start_iterations = 10;  ///< pcm-*: least-squares iterations that start the check
   bool recalibrate = false;         ///< pcm-*: the recalibrated check after the joint check
   GncSettings gnc;                  ///< graduated non-convexity
@@ -106,6 +112,7 @@ struct RobustResult {
   std::vector<Pose2> poses;                ///< optimised vertex poses
   std::vector<bool> accepted;              ///< per loop closure, in split.closures order
   std::optional<CliqueReport> clique;      ///< PCM methods only
+  std::optional<double> check_phi;         ///< joint check: the Phi of its DCS
   std::optional<double> variance_factor;   ///< recalibrated check: the factor f it used
   std::optional<CliqueReport> core;        ///< recalibrated check: the clique at the noise / f
   std::size_t gnc_steps = 0;               ///< gnc only: graduation steps run
