@@ -1,18 +1,21 @@
 #!/usr/bin/python3
 """pcm-aco under several settings on simulated Manhattan pose graphs (simulated_graphs.py), none
 of them a public graph: for every size, stated noise scale (1: as it is; 6: six times wider, as
-manhattan3500 and intel state theirs), kind of false closures and graph seed, 1,000 false
+manhattan3500 and intel state theirs; the odometry's another with --odometry-stated), kind of
+false closures and graph seed, 1,000 false
 closures, then per setting the false closures kept, the recall and the position RMSE against the
 outlier-free least-squares map. A setting is `default` or comma-separated options of
 antslam.slam.robust (`check_phi=3`, `recalibrate=1,check_phi=3`). Writes robust-simulated.csv
 (one row per graph and setting) and table.md (means per cell, then a summary per setting).
 
     PYTHONPATH=build/python /usr/bin/python3 experiments/scripts/robust_simulated.py
-        [--poses 1000 3500] [--stated 1 6] [--kinds random random-group local-group]
+        [--poses 1000 3500] [--stated 1 6] [--odometry-stated S]
+        [--kinds random random-group local-group]
         [--graphs 2] [--settings default recalibrate=1] [--threads 2]
         [--out results/robust-simulated] [--publish] [--quick]
 
 --quick: 1,000 poses, the noise stated 6 times wider, random false closures, one graph.
+--count: false closures per graph (1,000).
 --antslam is not used (the back ends run in this process).
 """
 import math
@@ -53,6 +56,8 @@ def main():
     p.add_argument("--poses", type=int, nargs="+", choices=[1000, 3500], default=[1000, 3500])
     p.add_argument("--stated", type=float, nargs="+", default=[1.0, 6.0],
                    help="stated noise / real noise (standard deviations)")
+    p.add_argument("--odometry-stated", type=float,
+                   help="the odometry's stated noise / real noise (default: as --stated)")
     p.add_argument("--kinds", nargs="+", default=["random", "random-group", "local-group"],
                    help="kinds of false closures")
     p.add_argument("--count", type=integer_at_least(0), default=1000, help="false closures")
@@ -65,6 +70,8 @@ def main():
         args.poses, args.stated, args.kinds = [1000], [6.0], ["random"]
     if not all(s > 0 for s in args.stated):
         p.error("--stated: scales must be > 0")
+    if args.odometry_stated is not None and not args.odometry_stated > 0:
+        p.error("--odometry-stated: the scale must be > 0")
     try:
         settings = [(text, parse_setting(text)) for text in args.settings]
     except ValueError as e:
@@ -76,7 +83,8 @@ def main():
             for kind in args.kinds:
                 for seed in range(1, args.graphs + 1):
                     g = manhattan_graph(antslam, poses, 100 + seed, world=WORLD_SIDE[poses],
-                                        stated_scale=stated)
+                                        stated_scale=stated,
+                                        odometry_stated_scale=args.odometry_stated)
                     clean = antslam.slam.robust(g, "ls").poses
                     spoiled, false = antslam.slam.add_outliers(g, args.count, kind=kind,
                                                                seed=seed)
@@ -84,8 +92,11 @@ def main():
                     cell = []
                     for text, options in settings:
                         start = time.perf_counter()
-                        r = antslam.slam.robust(spoiled, "pcm-aco", threads=args.threads,
-                                                **options)
+                        try:
+                            r = antslam.slam.robust(spoiled, "pcm-aco", threads=args.threads,
+                                                    **options)
+                        except (TypeError, ValueError) as e:  # an unknown or invalid option
+                            p.error(f"--settings {text}: {e}")
                         seconds = time.perf_counter() - start
                         kept = [tuple(c) for c in r.closures[r.accepted].tolist()]
                         kept_false = sum(c in false_pairs for c in kept)

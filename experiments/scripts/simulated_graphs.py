@@ -3,7 +3,8 @@ manhattan3500: a robot on a grid of 1 m streets, one step per pose, turning by 9
 some crossings, with a loop closure to an earlier pose at the same crossing. The odometry and
 the closures carry Gaussian noise of `sigma_xy`, `sigma_theta`; every edge states the
 information of `stated_scale` times that noise's standard deviation (manhattan3500 and intel
-state their noise about 6 to 7 times wider than their least-squares residuals show). Used to
+state their noise about 6 to 7 times wider than their least-squares residuals show), the odometry
+optionally another scale. Used to
 choose parameters on data that is not one of the public graphs (clique_options.py)."""
 import math
 import os
@@ -29,11 +30,12 @@ def _between(a, b):
 
 
 def manhattan_g2o(poses, seed, world=30, turn=0.3, closure=0.5, min_gap=10, sigma_xy=0.05,
-                  sigma_theta=0.01, stated_scale=6.0):
+                  sigma_theta=0.01, stated_scale=6.0, odometry_stated_scale=None):
     """g2o text of a simulated Manhattan graph with `poses` poses in a world of world x world
     crossings: at each crossing the robot turns with probability `turn` (and always at the
     border), and a pose at a crossing it visited at least `min_gap` poses earlier closes a loop
-    to one of those visits with probability `closure`."""
+    to one of those visits with probability `closure`. The odometry states its noise
+    `odometry_stated_scale` times wider than it is (default: stated_scale, as the closures)."""
     rng = np.random.default_rng(seed)
     truth = [(0.0, 0.0, 0.0)]
     heading = 0
@@ -64,14 +66,19 @@ def manhattan_g2o(poses, seed, world=30, turn=0.3, closure=0.5, min_gap=10, sigm
             i = int(rng.choice(earlier))
             edges.append((i, j, measured(i, j)))
         visits.setdefault(key, []).append(j)
-    info_xy = 1.0 / (stated_scale * sigma_xy) ** 2
-    info_theta = 1.0 / (stated_scale * sigma_theta) ** 2
+    def information(scale):
+        return 1.0 / (scale * sigma_xy) ** 2, 1.0 / (scale * sigma_theta) ** 2
+
+    closure_info = information(stated_scale)
+    odometry_info = information(stated_scale if odometry_stated_scale is None
+                                else odometry_stated_scale)
     estimate = [(0.0, 0.0, 0.0)]
     for _, _, z in edges[:poses - 1]:
         estimate.append(_compose(estimate[-1], z))
     lines = [f"VERTEX_SE2 {k} {x!r} {y!r} {t!r}" for k, (x, y, t) in enumerate(estimate)]
-    lines += [f"EDGE_SE2 {i} {j} {z[0]!r} {z[1]!r} {z[2]!r} {info_xy!r} 0 0 {info_xy!r} 0 "
-              f"{info_theta!r}" for i, j, z in edges]
+    for i, j, z in edges:
+        xy, theta = odometry_info if j == i + 1 else closure_info
+        lines.append(f"EDGE_SE2 {i} {j} {z[0]!r} {z[1]!r} {z[2]!r} {xy!r} 0 0 {xy!r} 0 {theta!r}")
     return "\n".join(lines) + "\n"
 
 
