@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "aco/backend_factory.hpp"
+#include "clique/exact.hpp"
 #include "clique/greedy.hpp"
 #include "clique/local_search.hpp"
 #include "clique/problem.hpp"
@@ -42,6 +43,15 @@ AcoSearchResult maximum_clique_aco(const Graph& graph, const AcoSearchSettings& 
   result.clique.weight = weight_of(graph, result.clique.vertices);
   result.clique.upper_bound = bound;
   result.clique.optimal = result.clique.weight >= bound;
+  if (settings.proof_nodes > 0 && !result.clique.optimal) {
+    const ExactResult exact = maximum_clique_exact(
+        graph, {.time_limit_s = 0.0, .max_nodes = settings.proof_nodes}, result.clique.vertices);
+    result.proof_nodes = exact.nodes;
+    result.clique.vertices = exact.clique.vertices;
+    result.clique.weight = exact.clique.weight;
+    result.clique.optimal = exact.clique.optimal;
+    if (exact.clique.optimal) result.clique.upper_bound = exact.clique.weight;
+  }
   result.clique.elapsed_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -21,12 +21,13 @@ using Clock = std::chrono::steady_clock;
 /// has been reached before.
 class BranchAndBound {
  public:
-  BranchAndBound(const detail::RenumberedGraph& graph, Clock::time_point deadline)
-      : g_(graph), deadline_(deadline) {
+  BranchAndBound(const detail::RenumberedGraph& graph, Clock::time_point deadline,
+                 std::uint64_t max_nodes)
+      : g_(graph), deadline_(deadline), max_nodes_(max_nodes) {
     levels_.reserve(graph.size() + 1);
   }
 
-  /// Searches from the clique `start` (renumbered vertices); false if the deadline stopped it.
+  /// Searches from the clique `start` (renumbered vertices); false if a budget stopped it.
   bool run(const std::vector<std::uint32_t>& start, double start_weight) {
     best_ = start;
     best_weight_ = start_weight;
@@ -53,6 +54,7 @@ class BranchAndBound {
 
   void expand(std::size_t depth, double weight) {
     if (++nodes_ % 1024 == 0 && Clock::now() >= deadline_) stopped_ = true;
+    if (max_nodes_ > 0 && nodes_ > max_nodes_) stopped_ = true;
     if (stopped_) return;
     Level& here = level(depth);
     detail::colour(g_, here.set, here.remaining, here.open, here.order, here.bound);
@@ -79,6 +81,7 @@ class BranchAndBound {
 
   const detail::RenumberedGraph& g_;
   Clock::time_point deadline_;
+  std::uint64_t max_nodes_;
   std::vector<Level> levels_;
   std::vector<std::uint32_t> clique_;
   std::vector<std::uint32_t> best_;
@@ -89,9 +92,12 @@ class BranchAndBound {
 
 }  // namespace
 
-ExactResult maximum_clique_exact(const Graph& graph, const ExactSettings& settings) {
+ExactResult maximum_clique_exact(const Graph& graph, const ExactSettings& settings,
+                                 std::span<const std::uint32_t> start_from) {
   if (!std::isfinite(settings.time_limit_s) || settings.time_limit_s < 0.0)
     throw std::invalid_argument("exact clique search: time limit must be a finite number >= 0");
+  if (!is_clique(graph, start_from))
+    throw std::invalid_argument("exact clique search: the start is not a clique of the graph");
   const auto start = Clock::now();
   const Clock::time_point deadline =
       settings.time_limit_s > 0.0
@@ -103,10 +109,14 @@ ExactResult maximum_clique_exact(const Graph& graph, const ExactSettings& settin
   for (std::uint32_t v = 0; v < graph.size(); ++v) renumbered_of[renumbered.original(v)] = v;
 
   const CliqueResult greedy = greedy_clique(graph);
+  const double given_weight = weight_of(graph, start_from);
+  const bool from_given = !start_from.empty() && given_weight >= greedy.weight;
   std::vector<std::uint32_t> start_clique;
-  for (const std::uint32_t v : greedy.vertices) start_clique.push_back(renumbered_of[v]);
-  BranchAndBound search(renumbered, deadline);
-  const bool finished = search.run(start_clique, greedy.weight);
+  for (const std::uint32_t v :
+       from_given ? start_from : std::span<const std::uint32_t>(greedy.vertices))
+    start_clique.push_back(renumbered_of[v]);
+  BranchAndBound search(renumbered, deadline, settings.max_nodes);
+  const bool finished = search.run(start_clique, std::max(given_weight, greedy.weight));
 
   ExactResult result;
   result.nodes = search.nodes();

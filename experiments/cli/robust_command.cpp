@@ -30,7 +30,8 @@ namespace antslam::cli {
 
 namespace {
 
-constexpr std::uint64_t kMaxIterations = 100'000'000;  ///< --iterations (count)
+constexpr std::uint64_t kMaxIterations = 100'000'000;        ///< --iterations (count)
+constexpr std::uint64_t kMaxProofNodes = 1'000'000'000'000;  ///< --proof-nodes (count)
 
 struct RobustOptions {
   std::string input;
@@ -100,6 +101,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
         {"aco_max_iterations", o.s.aco.termination.max_iterations},
         {"aco_stagnation_iterations", o.s.aco.termination.stagnation_iterations},
         {"aco_plateau_steps", o.s.aco.plateau_steps},
+        {"aco_proof_nodes", o.s.aco.proof_nodes},
         {"aco_restart_stagnant", o.s.aco.parameters.restart_stagnant},
         {"backend", o.backend},
         {"threads", o.s.threads}}}};
@@ -262,6 +264,11 @@ void add_robust_command(CLI::App& app) {
   cmd->add_option("--plateau-steps", o->s.aco.plateau_steps,
                   "pcm-aco: plateau moves after each ant's (1,2)-swaps (0 = none)")
       ->check(count_in(0, kMaxIterations))
+      ->capture_default_str();
+  cmd->add_option("--proof-nodes", o->s.aco.proof_nodes,
+                  "pcm-aco: then branch and bound from the ants' clique for at most this many "
+                  "nodes: a proof that it is maximum, or a larger one (0 = none)")
+      ->check(count_in(0, kMaxProofNodes))
       ->capture_default_str();
   cmd->add_option("--restart-stagnant", o->s.aco.parameters.restart_stagnant,
                   "pcm-aco, mmas: re-initialise the trails when the restart-best is this many "

@@ -45,6 +45,8 @@ def options():
                    help="pcm-aco: its --plateau-steps (default: the program's)")
     p.add_argument("--restart-stagnant", type=integer_at_least(0),
                    help="pcm-aco: its --restart-stagnant (default: the program's)")
+    p.add_argument("--proof-nodes", type=integer_at_least(0),
+                   help="pcm-aco: its --proof-nodes (default: the program's)")
     p.add_argument("--recalibrate", action="store_true",
                    help="pcm-*: the recalibrated check (antslam robust --recalibrate)")
     p.add_argument("--check-phi", type=float,
@@ -126,6 +128,8 @@ def run_cases(args, cases):
     ant_options = [] if args.plateau_steps is None else ["--plateau-steps", args.plateau_steps]
     if args.restart_stagnant is not None:
         ant_options += ["--restart-stagnant", args.restart_stagnant]
+    if args.proof_nodes is not None:
+        ant_options += ["--proof-nodes", args.proof_nodes]
     pcm_options = ["--recalibrate"] if args.recalibrate else []
     if args.check_phi is not None:
         pcm_options += ["--check-phi", args.check_phi]

@@ -51,7 +51,7 @@ class AcoResult:
 
 
 _SEARCH = {"local_search": "local_search", "plateau_steps": "plateau_steps",
-           "backend": "backend", "threads": "threads"}
+           "proof_nodes": "proof_nodes", "backend": "backend", "threads": "threads"}
 _STOP = {"iterations": "max_iterations", "stagnation": "stagnation_iterations",
          "time_limit": "time_limit_s"}
 
@@ -61,9 +61,10 @@ def aco(graph, variant=None, seed=1, **options):
     defaults are the program's): iterations, stagnation (iterations without a better clique),
     time_limit (s), local_search (False: the ants' cliques as built), plateau_steps (plateau
     moves after each ant's (1,2)-swaps; 0, the default: none; docs/robust-closures.md),
-    backend (auto, serial, omp, tbb), threads, and the engine's parameters (ants, rho, ...).
-    The run also stops when a clique reaches the colouring bound (stop_reason "target": proven
-    maximum)."""
+    proof_nodes (then branch and bound from the ants' clique for at most that many nodes: a
+    proof of maximality or a heavier clique; 0: none), backend (auto, serial, omp, tbb),
+    threads, and the engine's parameters (ants, rho, ...). The run also stops when a clique
+    reaches the colouring bound (stop_reason "target": proven maximum)."""
     settings = _core.clique.AcoSettings()
     if variant is not None:
         settings.parameters.variant = variant

@@ -161,6 +161,7 @@ _ROBUST = dict(
     check_clique="check_clique", check_phi="check_phi", recalibrate="recalibrate",
     exact_time_limit="exact_time_limit_s",
     iterations="aco.termination.max_iterations", plateau_steps="aco.plateau_steps",
+    proof_nodes="aco.proof_nodes",
     backend="backend", threads="threads")
 
 
@@ -198,10 +199,11 @@ def robust(graph, method="pcm-aco", *, variant=None, seed=1, **options):
     as the program's: confidence, cauchy_scale, dcs_phi, check_clique (False: the published
     PCM), check_phi (the check's DCS Phi in multiples of the clique's median unary distance; 0:
     dcs_phi), recalibrate (the recalibrated check), exact_time_limit (s), and for pcm-aco
-    variant, seed, iterations, plateau_steps and the engine's parameters (ants, rho, ...);
-    backend, threads. The result: poses (n, 3), closures ((m, 2) vertex pairs of the loop
-    closures, in input order), accepted (m booleans), clique, check_phi (the Phi the check
-    used), variance_factor and core (recalibrated check) (PCM methods), times; kept_graph(graph) is the graph `antslam robust` writes."""
+    variant, seed, iterations, plateau_steps, proof_nodes and the engine's parameters (ants,
+    rho, ...); backend, threads. The result: poses (n, 3), closures ((m, 2) vertex pairs of the
+    loop closures, in input order), accepted (m booleans), clique, check_phi (the Phi the check
+    used), variance_factor and core (recalibrated check) (PCM methods), times;
+    kept_graph(graph) is the graph `antslam robust` writes."""
     settings = _core.slam.RobustSettings()
     if variant is not None:
         settings.aco.parameters.variant = variant

@@ -70,6 +70,7 @@ void bind_clique(py::module_& m) {
       .def_readwrite("termination", &clique::AcoSearchSettings::termination)
       .def_readwrite("local_search", &clique::AcoSearchSettings::local_search)
       .def_readwrite("plateau_steps", &clique::AcoSearchSettings::plateau_steps)
+      .def_readwrite("proof_nodes", &clique::AcoSearchSettings::proof_nodes)
       .def_readwrite("threads", &clique::AcoSearchSettings::threads)
       .def_property(
           "backend",

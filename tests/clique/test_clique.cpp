@@ -133,6 +133,61 @@ TEST_P(SmallRandomGraph, AntsFindTheMaximum) {
   EXPECT_GE(r.clique.upper_bound, optimum);
 }
 
+TEST_P(SmallRandomGraph, ExactFromAGivenCliqueEqualsEnumeration) {
+  // Started from a single vertex, the greedy clique or a maximum one, branch and bound ends at
+  // the maximum; a heavier start prunes at least as much (the same branching, a higher bound).
+  const auto seed = static_cast<std::uint64_t>(GetParam());
+  const Graph g = random_graph(16, 0.5, seed + 300, 4);
+  const double optimum = brute_force_maximum(g);
+  const ExactResult plain = maximum_clique_exact(g);
+  const std::vector<std::uint32_t> one{7};
+  for (const std::vector<std::uint32_t>& start :
+       {one, greedy_clique(g).vertices, plain.clique.vertices}) {
+    const ExactResult r = maximum_clique_exact(g, {}, start);
+    EXPECT_TRUE(r.clique.optimal);
+    EXPECT_EQ(r.clique.weight, optimum);
+    EXPECT_TRUE(is_clique(g, r.clique.vertices));
+  }
+  EXPECT_LE(maximum_clique_exact(g, {}, plain.clique.vertices).nodes, plain.nodes);
+}
+
+TEST(Exact, KeepsAGivenMaximumCliqueRatherThanAnotherOfTheSameWeight) {
+  // Two disjoint triangles: the greedy clique is one of them; started from the other, branch and
+  // bound proves it maximum and returns it, not the greedy one.
+  const std::vector<Edge> edges{{0, 1}, {0, 2}, {1, 2}, {3, 4}, {3, 5}, {4, 5}};
+  const Graph g(6, edges);
+  const std::vector<std::uint32_t> greedy = greedy_clique(g).vertices;
+  const std::vector<std::uint32_t> other = greedy.front() < 3 ? std::vector<std::uint32_t>{3, 4, 5}
+                                                              : std::vector<std::uint32_t>{0, 1, 2};
+  const ExactResult r = maximum_clique_exact(g, {}, other);
+  EXPECT_TRUE(r.clique.optimal);
+  EXPECT_EQ(r.clique.vertices, other);
+}
+
+TEST_P(SmallRandomGraph, ProofNodesProveTheAntsCliqueOrFindTheMaximum) {
+  // One ant, one iteration, no local search: often short of the maximum; branch and bound from
+  // its clique then reaches the maximum and proves it, and never returns a lighter clique.
+  const auto seed = static_cast<std::uint64_t>(GetParam());
+  const Graph g = random_graph(18, 0.5, seed + 100, 5);
+  const double optimum = brute_force_maximum(g);
+  AcoSearchSettings s;
+  s.parameters.seed = seed;
+  s.parameters.ants = 1;
+  s.local_search = false;
+  s.termination = {.max_iterations = 1};
+  s.proof_nodes = 0;
+  const AcoSearchResult alone = maximum_clique_aco(g, s);
+  s.proof_nodes = 1'000'000;
+  const AcoSearchResult proved = maximum_clique_aco(g, s);
+  EXPECT_EQ(proved.iterations, alone.iterations);
+  EXPECT_EQ(proved.clique.weight, optimum);
+  EXPECT_TRUE(proved.clique.optimal);
+  EXPECT_EQ(proved.clique.upper_bound, optimum);
+  EXPECT_TRUE(is_clique(g, proved.clique.vertices));
+  EXPECT_EQ(alone.proof_nodes, 0U);
+  EXPECT_GT(proved.proof_nodes + (alone.clique.optimal ? 1U : 0U), 0U);
+}
+
 INSTANTIATE_TEST_SUITE_P(Seeds, SmallRandomGraph, ::testing::Range(1, 25));
 
 TEST(Exact, StopsAtTheTimeLimitWithAValidClique) {
@@ -142,6 +197,22 @@ TEST(Exact, StopsAtTheTimeLimitWithAValidClique) {
   EXPECT_TRUE(is_clique(g, r.clique.vertices));
   EXPECT_GE(r.clique.upper_bound, r.clique.weight);
   EXPECT_THROW(maximum_clique_exact(g, {.time_limit_s = -1.0}), std::invalid_argument);
+}
+
+TEST(Exact, StopsAtTheNodeBudgetTheSameWayEveryTime) {
+  const Graph g = random_graph(400, 0.9, 3);
+  const ExactResult a = maximum_clique_exact(g, {.time_limit_s = 0.0, .max_nodes = 500});
+  const ExactResult b = maximum_clique_exact(g, {.time_limit_s = 0.0, .max_nodes = 500});
+  EXPECT_FALSE(a.clique.optimal);
+  EXPECT_EQ(a.nodes, 501U);  // the node that exceeds the budget stops the search
+  EXPECT_EQ(a.clique.vertices, b.clique.vertices);
+  EXPECT_EQ(a.nodes, b.nodes);
+  EXPECT_TRUE(is_clique(g, a.clique.vertices));
+  const std::vector<std::uint32_t> not_a_clique{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  ASSERT_FALSE(is_clique(g, not_a_clique));
+  EXPECT_THROW(maximum_clique_exact(g, {}, not_a_clique), std::invalid_argument);
+  const std::vector<std::uint32_t> outside{400};
+  EXPECT_THROW(maximum_clique_exact(g, {}, outside), std::invalid_argument);
 }
 
 TEST(Aco, StopsAtTheColouringBound) {

@@ -49,6 +49,10 @@ def test_every_search_against_brute_force(seed, weighted):
         assert g.weight_of(ants.vertices) == ants.weight
     greedy = antslam.clique.greedy(g)
     assert g.is_clique(greedy.vertices) and greedy.weight <= best
+    weak = dict(ants=1, iterations=1, local_search=False)  # one ant's clique, as built
+    proved = antslam.clique.aco(g, seed=seed, proof_nodes=10**6, **weak)
+    assert proved.weight == best and proved.clique.optimal and g.is_clique(proved.vertices)
+    assert antslam.clique.aco(g, seed=seed, proof_nodes=0, **weak).weight <= best
 
 
 def test_the_seed_gives_the_same_clique_on_every_thread_count_and_backend():
