@@ -108,15 +108,16 @@ ExactResult maximum_clique_exact(const Graph& graph, const ExactSettings& settin
   std::vector<std::uint32_t> renumbered_of(graph.size());
   for (std::uint32_t v = 0; v < graph.size(); ++v) renumbered_of[renumbered.original(v)] = v;
 
+  // The first incumbent: the given clique unless the greedy one is heavier.
   const CliqueResult greedy = greedy_clique(graph);
   const double given_weight = weight_of(graph, start_from);
   const bool from_given = !start_from.empty() && given_weight >= greedy.weight;
+  const std::span<const std::uint32_t> first =
+      from_given ? start_from : std::span<const std::uint32_t>(greedy.vertices);
   std::vector<std::uint32_t> start_clique;
-  for (const std::uint32_t v :
-       from_given ? start_from : std::span<const std::uint32_t>(greedy.vertices))
-    start_clique.push_back(renumbered_of[v]);
+  for (const std::uint32_t v : first) start_clique.push_back(renumbered_of[v]);
   BranchAndBound search(renumbered, deadline, settings.max_nodes);
-  const bool finished = search.run(start_clique, std::max(given_weight, greedy.weight));
+  const bool finished = search.run(start_clique, from_given ? given_weight : greedy.weight);
 
   ExactResult result;
   result.nodes = search.nodes();

@@ -51,6 +51,62 @@ def parse_setting(text):
     return options
 
 
+def run_cell(p, args, graph, kind, seed, settings):
+    """pcm-aco under every setting on `graph` spoiled with args.count false closures of `kind`:
+    [setting, false closures kept, recall, position RMSE to the outlier-free map, seconds]."""
+    clean = antslam.slam.robust(graph, "ls").poses
+    spoiled, false = antslam.slam.add_outliers(graph, args.count, kind=kind, seed=seed)
+    false_pairs = {tuple(f) for f in false.tolist()}
+    cell = []
+    for text, options in settings:
+        start = time.perf_counter()
+        try:
+            r = antslam.slam.robust(spoiled, "pcm-aco", threads=args.threads, **options)
+        except (TypeError, ValueError) as e:  # an unknown or invalid option
+            p.error(f"--settings {text}: {e}")
+        seconds = time.perf_counter() - start
+        kept = [tuple(c) for c in r.closures[r.accepted].tolist()]
+        kept_false = sum(c in false_pairs for c in kept)
+        recall = (len(kept) - kept_false) / (len(r.closures) - len(false))
+        rmse = float(np.sqrt(((r.poses[:, :2] - clean[:, :2]) ** 2).sum(1).mean()))
+        cell.append([text, kept_false, recall, rmse, seconds])
+    return cell
+
+
+def cell_table(args, rows, names):
+    """Means per size, stated noise and kind, the settings' values side by side."""
+    lines = []
+    for poses in args.poses:
+        for stated in args.stated:
+            for kind in args.kinds:
+                cell = [r for r in rows if r[:3] == [poses, stated, kind]]
+                lines.append([poses, f"x{stated:g}", kind] + [
+                    " / ".join(f"{np.mean([r[i] for r in cell if r[4] == n]):.{d}f}"
+                               for n in names) for i, d in ((5, 1), (6, 3), (7, 3), (8, 1))])
+    return markdown_table(["poses", "stated noise", "false closures",
+                           "false kept (" + " / ".join(names) + ")", "recall", "RMSE m",
+                           "time s"], lines)
+
+
+def summary_table(rows, names):
+    """One line per setting over all graphs; a run is "within" when its RMSE is at most 1.05x
+    (+5 mm) the best setting's on the same graph."""
+    best = {}
+    for r in rows:
+        best[tuple(r[:4])] = min(best.get(tuple(r[:4]), math.inf), r[7])
+    lines = []
+    for n in names:
+        mine = [r for r in rows if r[4] == n]
+        lines.append([n, sum(r[5] for r in mine), f"{np.mean([r[6] for r in mine]):.3f}",
+                      f"{min(r[6] for r in mine):.3f}", f"{np.mean([r[7] for r in mine]):.3f}",
+                      f"{max(r[7] for r in mine):.3f}",
+                      sum(r[7] <= 1.05 * best[tuple(r[:4])] + 0.005 for r in mine), len(mine),
+                      f"{sum(r[8] for r in mine):.1f}"])
+    return markdown_table(["setting", "false kept, all runs", "recall mean", "recall min",
+                           "RMSE mean m", "RMSE max m", "runs within 1.05x (+5 mm) of the best",
+                           "runs", "time s, all runs"], lines)
+
+
 def main():
     p = parser(__doc__, "robust-simulated")
     p.add_argument("--poses", type=int, nargs="+", choices=[1000, 3500], default=[1000, 3500])
@@ -85,58 +141,15 @@ def main():
                     g = manhattan_graph(antslam, poses, 100 + seed, world=WORLD_SIDE[poses],
                                         stated_scale=stated,
                                         odometry_stated_scale=args.odometry_stated)
-                    clean = antslam.slam.robust(g, "ls").poses
-                    spoiled, false = antslam.slam.add_outliers(g, args.count, kind=kind,
-                                                               seed=seed)
-                    false_pairs = {tuple(f) for f in false.tolist()}
-                    cell = []
-                    for text, options in settings:
-                        start = time.perf_counter()
-                        try:
-                            r = antslam.slam.robust(spoiled, "pcm-aco", threads=args.threads,
-                                                    **options)
-                        except (TypeError, ValueError) as e:  # an unknown or invalid option
-                            p.error(f"--settings {text}: {e}")
-                        seconds = time.perf_counter() - start
-                        kept = [tuple(c) for c in r.closures[r.accepted].tolist()]
-                        kept_false = sum(c in false_pairs for c in kept)
-                        recall = (len(kept) - kept_false) / (len(r.closures) - len(false))
-                        rmse = float(np.sqrt(((r.poses[:, :2] - clean[:, :2]) ** 2).sum(1).mean()))
-                        cell.append([poses, stated, kind, seed, text, kept_false, recall, rmse,
-                                     seconds])
-                    rows += cell
+                    cell = run_cell(p, args, g, kind, seed, settings)
+                    rows += [[poses, stated, kind, seed] + r for r in cell]
                     progress(f"{poses} poses, stated x{stated:g}, {kind} #{seed}: " + "; ".join(
-                        f"{r[4]} {r[5]} false, recall {r[6]:.3f}, {r[7]:.3f} m" for r in cell))
+                        f"{r[0]} {r[1]} false, recall {r[2]:.3f}, {r[3]:.3f} m" for r in cell))
     save_csv(args, "robust-simulated", ["poses", "stated", "kind", "graph", "setting",
                                         "false_kept", "recall", "rmse_m", "time_s"], rows)
     names = [text for text, _ in settings]
-    table_rows = []
-    for poses in args.poses:
-        for stated in args.stated:
-            for kind in args.kinds:
-                cell = [r for r in rows if r[:3] == [poses, stated, kind]]
-                table_rows.append([poses, f"x{stated:g}", kind] + [
-                    " / ".join(f"{np.mean([r[i] for r in cell if r[4] == n]):.{d}f}"
-                               for n in names) for i, d in ((5, 1), (6, 3), (7, 3), (8, 1))])
-    table = markdown_table(["poses", "stated noise", "false closures",
-                            "false kept (" + " / ".join(names) + ")", "recall", "RMSE m",
-                            "time s"], table_rows)
-    best = {}
-    for r in rows:
-        key = tuple(r[:4])
-        best[key] = min(best.get(key, math.inf), r[7])
-    summary_rows = []
-    for n in names:
-        mine = [r for r in rows if r[4] == n]
-        summary_rows.append([n, sum(r[5] for r in mine), f"{np.mean([r[6] for r in mine]):.3f}",
-                             f"{min(r[6] for r in mine):.3f}",
-                             f"{np.mean([r[7] for r in mine]):.3f}",
-                             f"{max(r[7] for r in mine):.3f}",
-                             sum(r[7] <= 1.05 * best[tuple(r[:4])] + 0.005 for r in mine),
-                             len(mine), f"{sum(r[8] for r in mine):.1f}"])
-    summary = markdown_table(["setting", "false kept, all runs", "recall mean", "recall min",
-                              "RMSE mean m", "RMSE max m", "runs within 1.05x (+5 mm) of the best",
-                              "runs", "time s, all runs"], summary_rows)
+    table = cell_table(args, rows, names)
+    summary = summary_table(rows, names)
     save_table(args, header(args, "experiments/scripts/robust_simulated.py") + table + "\n" +
                summary)
     print(table + "\n" + summary, end="")
