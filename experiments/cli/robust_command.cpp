@@ -92,7 +92,7 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
         {"dcs_phi", o.s.dcs_phi},
         {"check_clique", o.s.check_clique},
         {"check_phi", o.s.check_phi},
-        {"recalibrate", o.s.recalibrate},
+        {"recalibrate_below", o.s.recalibrate_below},
         {"gnc_mu_factor", o.s.gnc.mu_factor},
         {"exact_time_limit_s", o.s.exact.time_limit_s},
         {"aco_variant", o.variant},
@@ -120,10 +120,13 @@ nlohmann::ordered_json report(const RobustOptions& o, const slam::PoseGraph& gra
                    {"work", r.clique->work}};
   }
   if (r.check_phi) j["check"] = {{"dcs_phi", *r.check_phi}};
-  if (r.core) {
+  if (r.variance_factor) {
     j["recalibration"] = {{"variance_factor", *r.variance_factor},
-                          {"core_size", r.core->clique.vertices.size()},
-                          {"core_optimal", r.core->clique.optimal}};
+                          {"recalibrated", r.core.has_value()}};
+    if (r.core) {
+      j["recalibration"]["core_size"] = r.core->clique.vertices.size();
+      j["recalibration"]["core_optimal"] = r.core->clique.optimal;
+    }
   }
   if (r.method == slam::RobustMethod::gnc) j["gnc_steps"] = r.gnc_steps;
   j["residuals"] = {{"chi2", fit.chi2},
@@ -247,10 +250,12 @@ void add_robust_command(CLI::App& app) {
                   "at the stated noise")
       ->check(finite_in(0.0, 1e9))
       ->capture_default_str();
-  cmd->add_flag("--recalibrate", o->s.recalibrate,
-                "pcm-*: after the check, a second clique at the noise the checked graph shows (its "
-                "variance factor f), DCS on both cliques' closures from the map of those they "
-                "share, and the test at that noise");
+  cmd->add_option("--recalibrate-below", o->s.recalibrate_below,
+                  "pcm-*: when the checked graph's variance factor f is below this, a second "
+                  "clique at the noise it shows, DCS on both cliques' closures from the map of "
+                  "those they share, and the test at that noise (0 = never, 1e9 = always)")
+      ->check(finite_in(0.0, 1e9))
+      ->capture_default_str();
   cmd->add_option("--variant", o->variant, "pcm-aco: ACO variant")
       ->check(CLI::IsMember(aco::variant_names()))
       ->capture_default_str();

@@ -47,8 +47,9 @@ def options():
                    help="pcm-aco: its --restart-stagnant (default: the program's)")
     p.add_argument("--proof-nodes", type=integer_at_least(0),
                    help="pcm-aco: its --proof-nodes (default: the program's)")
-    p.add_argument("--recalibrate", action="store_true",
-                   help="pcm-*: the recalibrated check (antslam robust --recalibrate)")
+    p.add_argument("--recalibrate-below", type=float,
+                   help="pcm-*: the recalibrated check's threshold (antslam robust "
+                        "--recalibrate-below; default: the program's)")
     p.add_argument("--check-phi", type=float,
                    help="pcm-*: the check's Phi from the noise the clique shows (antslam robust "
                         "--check-phi; default: the program's)")
@@ -130,7 +131,8 @@ def run_cases(args, cases):
         ant_options += ["--restart-stagnant", args.restart_stagnant]
     if args.proof_nodes is not None:
         ant_options += ["--proof-nodes", args.proof_nodes]
-    pcm_options = ["--recalibrate"] if args.recalibrate else []
+    pcm_options = ([] if args.recalibrate_below is None else
+                   ["--recalibrate-below", args.recalibrate_below])
     if args.check_phi is not None:
         pcm_options += ["--check-phi", args.check_phi]
     run_batch(args, [["robust", spoiled, "--method", method, "--threads", args.threads, *refs,

@@ -5,13 +5,15 @@ manhattan3500 and intel state theirs; the odometry's another with --odometry-sta
 false closures and graph seed, 1,000 false
 closures, then per setting the false closures kept, the recall and the position RMSE against the
 outlier-free least-squares map. A setting is `default` or comma-separated options of
-antslam.slam.robust (`check_phi=3`, `recalibrate=1,check_phi=3`). Writes robust-simulated.csv
-(one row per graph and setting) and table.md (means per cell, then a summary per setting).
+antslam.slam.robust (`check_phi=3`, `recalibrate_below=0,check_phi=3`). Writes
+robust-simulated.csv (one row per graph and setting), table.md (means per cell, then a
+summary per setting) and, for several --stated scales, robust-simulated.png (false closures
+kept, recall and RMSE against the stated scale, one line per setting and size).
 
     PYTHONPATH=build/python /usr/bin/python3 experiments/scripts/robust_simulated.py
         [--poses 1000 3500] [--stated 1 6] [--odometry-stated S]
         [--kinds random random-group local-group]
-        [--graphs 2] [--settings default recalibrate=1] [--threads 2]
+        [--graphs 2] [--settings recalibrate_below=0 recalibrate_below=1e9] [--threads 2]
         [--out results/robust-simulated] [--publish] [--quick]
 
 --quick: 1,000 poses, the noise stated 6 times wider, random false closures, one graph.
@@ -26,7 +28,7 @@ import time
 import numpy as np
 
 from experiment_common import (count_option, header, integer_at_least, markdown_table, parser,
-                               progress, save_csv, save_table)
+                               plt, progress, save_csv, save_figure, save_table)
 from simulated_graphs import WORLD_SIDE, manhattan_graph
 
 try:
@@ -53,7 +55,8 @@ def parse_setting(text):
 
 def run_cell(p, args, graph, kind, seed, settings):
     """pcm-aco under every setting on `graph` spoiled with args.count false closures of `kind`:
-    [setting, false closures kept, recall, position RMSE to the outlier-free map, seconds]."""
+    [setting, false closures kept, recall, position RMSE to the outlier-free map, seconds, the
+    checked graph's variance factor (None without the joint check)]."""
     clean = antslam.slam.robust(graph, "ls").poses
     spoiled, false = antslam.slam.add_outliers(graph, args.count, kind=kind, seed=seed)
     false_pairs = {tuple(f) for f in false.tolist()}
@@ -69,7 +72,7 @@ def run_cell(p, args, graph, kind, seed, settings):
         kept_false = sum(c in false_pairs for c in kept)
         recall = (len(kept) - kept_false) / (len(r.closures) - len(false))
         rmse = float(np.sqrt(((r.poses[:, :2] - clean[:, :2]) ** 2).sum(1).mean()))
-        cell.append([text, kept_false, recall, rmse, seconds])
+        cell.append([text, kept_false, recall, rmse, seconds, r.variance_factor])
     return cell
 
 
@@ -107,6 +110,30 @@ def summary_table(rows, names):
                            "runs", "time s, all runs"], lines)
 
 
+def stated_figure(args, rows, names):
+    """Means over kinds and graphs against the stated noise scale: one panel per measure, one
+    line per setting and size (the sizes solid and dashed)."""
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4))
+    measures = ((5, "false closures kept (of 1,000)"), (6, "recall"),
+                (7, "position RMSE to the outlier-free map, m"))
+    for ax, (i, label) in zip(axes, measures):
+        for colour, n in enumerate(names):
+            for style, poses in zip(("-", "--"), args.poses):
+                ax.plot(args.stated, [np.mean([r[i] for r in rows if r[0] == poses and
+                                               r[1] == stated and r[4] == n])
+                                      for stated in args.stated], style, marker="o",
+                        color=f"C{colour}", label=f"{n}, {poses} poses")
+        ax.set_xscale("log")
+        ax.set_xticks(args.stated, [f"x{s:g}" for s in args.stated])
+        ax.minorticks_off()
+        ax.set_xlabel("stated noise / real noise (standard deviation)")
+        ax.set_ylabel(label)
+    axes[0].legend(fontsize=7)
+    fig.suptitle(f"pcm-aco on simulated Manhattan graphs, {args.count} false closures "
+                 "(means over kinds and graphs)")
+    save_figure(args, fig, "robust-simulated")
+
+
 def main():
     p = parser(__doc__, "robust-simulated")
     p.add_argument("--poses", type=int, nargs="+", choices=[1000, 3500], default=[1000, 3500])
@@ -118,7 +145,8 @@ def main():
                    help="kinds of false closures")
     p.add_argument("--count", type=integer_at_least(0), default=1000, help="false closures")
     count_option(p, "--graphs", "graph seeds per setting", 2, 1)
-    p.add_argument("--settings", nargs="+", default=["default", "recalibrate=1"],
+    p.add_argument("--settings", nargs="+",
+                   default=["recalibrate_below=0", "recalibrate_below=1e9"],
                    help="settings compared: default or option=value[,option=value]")
     p.add_argument("--threads", type=integer_at_least(1), default=2, help="threads of each run")
     args = p.parse_args()
@@ -146,12 +174,15 @@ def main():
                     progress(f"{poses} poses, stated x{stated:g}, {kind} #{seed}: " + "; ".join(
                         f"{r[0]} {r[1]} false, recall {r[2]:.3f}, {r[3]:.3f} m" for r in cell))
     save_csv(args, "robust-simulated", ["poses", "stated", "kind", "graph", "setting",
-                                        "false_kept", "recall", "rmse_m", "time_s"], rows)
+                                        "false_kept", "recall", "rmse_m", "time_s",
+                                        "variance_factor"], rows)
     names = [text for text, _ in settings]
     table = cell_table(args, rows, names)
     summary = summary_table(rows, names)
     save_table(args, header(args, "experiments/scripts/robust_simulated.py") + table + "\n" +
                summary)
+    if len(args.stated) > 1:
+        stated_figure(args, rows, names)
     print(table + "\n" + summary, end="")
 
 

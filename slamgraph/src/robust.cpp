@@ -67,8 +67,8 @@ void validate(const RobustSettings& s) {
         "robust: GNC needs a mu factor > 1, at least one step and one iteration per step");
   if (!(std::isfinite(s.check_phi) && s.check_phi >= 0.0))
     throw std::invalid_argument("robust: the check's Phi must be a finite number >= 0");
-  if (s.recalibrate && !s.check_clique)
-    throw std::invalid_argument("robust: the recalibrated check follows the joint check (on)");
+  if (!(s.recalibrate_below >= 0.0))
+    throw std::invalid_argument("robust: the recalibration threshold must be a number >= 0");
   if (s.check_start_iterations <= 0)
     throw std::invalid_argument("robust: the clique check needs at least one start iteration");
 }

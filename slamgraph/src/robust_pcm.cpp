@@ -38,6 +38,41 @@ CliqueReport maximum_consistent_set(const ConsistencyGraph& consistency, RobustM
   return report;
 }
 
+std::optional<double> shown_variance_factor(const PoseGraph& graph, const ChainSplit& split,
+                                            const std::vector<bool>& accepted_closures,
+                                            std::span<const Pose2> poses, double c2) {
+  if (accepted_closures.size() != split.closures.size() || poses.size() != graph.vertices.size())
+    throw std::invalid_argument("shown_variance_factor: a flag per closure and a pose per vertex");
+  const std::vector<double> chi2 = edge_chi2(graph, poses);
+  std::vector<bool> closure(chi2.size(), false);
+  std::vector<double> accepted;
+  for (std::size_t k = 0; k < split.closures.size(); ++k) {
+    closure[split.closures[k]] = true;
+    if (accepted_closures[k]) accepted.push_back(chi2[split.closures[k]]);
+  }
+  double odometry_chi2 = 0.0;
+  std::int64_t odometry_edges = 0;
+  for (std::size_t e = 0; e < chi2.size(); ++e) {
+    if (closure[e]) continue;
+    odometry_chi2 += chi2[e];
+    ++odometry_edges;
+  }
+  std::sort(accepted.begin(), accepted.end());
+  std::vector<double> sum_below(accepted.size() + 1, 0.0);  // of the `kept` smallest
+  for (std::size_t k = 0; k < accepted.size(); ++k) sum_below[k + 1] = sum_below[k] + accepted[k];
+  const std::int64_t held = 3 * (static_cast<std::int64_t>(graph.vertices.size()) - 1);
+  std::optional<double> f;
+  for (std::size_t kept = accepted.size();;) {
+    const std::int64_t dof = 3 * (odometry_edges + static_cast<std::int64_t>(kept)) - held;
+    if (dof <= 0) return f;
+    f = (odometry_chi2 + sum_below[kept]) / static_cast<double>(dof);
+    const auto within = std::upper_bound(accepted.begin(), accepted.end(), *f * c2);
+    const auto now = static_cast<std::size_t>(within - accepted.begin());
+    if (now >= kept) return f;
+    kept = now;  // fewer closures every round, so this ends
+  }
+}
+
 }  // namespace antslam::slam
 
 namespace antslam::slam::detail {
@@ -114,17 +149,19 @@ void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, dou
   accept_after_dcs(graph, result.accepted, c2, *result.check_phi, settings, result);
 }
 
-/// The recalibrated check (robust.hpp): the variance factor f of the checked graph at the
-/// check's solution, the core clique at the noise divided by f, least squares on the closures
-/// of both cliques from the odometry, DCS on the closures of either from there, and the test at
-/// chi2 <= f c2. Skipped (f unset) when the checked graph has no redundancy or fits exactly.
+/// The recalibrated check (robust.hpp): the noise the checked graph shows (its trimmed variance
+/// factor f, above; unset when the checked graph has no redundancy or fits exactly), and when f
+/// is below settings.recalibrate_below the core clique at the noise divided by f, least squares
+/// on the closures of both cliques from the odometry, DCS on the closures of either from there,
+/// and the test at chi2 <= f c2.
 void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
                         const std::vector<bool>& clique, const RobustSettings& settings,
                         RobustResult& result) {
   const std::optional<double> f =
-      residual_summary(kept_graph(graph, result), result.poses).variance_factor;
+      shown_variance_factor(graph, result.split, result.accepted, result.poses, c2);
   if (!f || !(*f > 0.0) || !std::isfinite(*f)) return;
   result.variance_factor = f;
+  if (!(*f < settings.recalibrate_below)) return;
   PoseGraph recalibrated = graph;
   for (PoseGraphEdge& e : recalibrated.edges) e.information /= *f;
   result.core = maximum_clique_of(recalibrated, settings, result);
@@ -149,9 +186,10 @@ void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c
     for (const std::uint32_t k : result.clique->clique.vertices) result.accepted[k] = true;
   }
   const std::vector<bool> clique = result.accepted;
-  if (settings.check_clique && m > 0) check_clique(graph, initial, c2, settings, result);
-  if (settings.check_clique && settings.recalibrate && m > 0)
+  if (settings.check_clique && m > 0) {
+    check_clique(graph, initial, c2, settings, result);
     recalibrated_check(graph, initial, c2, clique, settings, result);
+  }
   // From the odometry again: the check's solve can end in a wrong basin with right decisions.
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), settings,
            result);

@@ -41,10 +41,12 @@ def test_pcm_keeps_every_true_closure_and_no_false_one(spoiled, method):
 
 def test_the_recalibrated_check_reports_its_factor_and_core(spoiled):
     graph, false = spoiled
-    plain = antslam.slam.robust(graph, "pcm-aco")
-    r = antslam.slam.robust(graph, "pcm-aco", recalibrate=True)
-    assert plain.variance_factor is None and plain.core is None
+    never = antslam.slam.robust(graph, "pcm-aco", recalibrate_below=0)
+    r = antslam.slam.robust(graph, "pcm-aco", recalibrate_below=1e9)
+    assert never.core is None and never.variance_factor == r.variance_factor
     assert 0 < r.variance_factor < 1 and r.core.weight <= len(r.closures)
+    default = antslam.slam.robust(graph, "pcm-aco")
+    assert (default.core is not None) == (default.variance_factor < 0.13)
     false_pairs = {tuple(p) for p in false.tolist()}
     assert not {tuple(c) for c in r.closures[r.accepted].tolist()} & false_pairs
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "pose_graphs.hpp"
@@ -146,9 +147,9 @@ TEST(Robust, TheJointCheckDropsAFalseClosureThatEveryPairwiseTestPasses) {
 TEST(Robust, TheRecalibratedCheckDropsAFalseClosureTheStatedNoiseHides) {
   // The graph of the test above (noise stated twenty times its real deviation) with a false
   // closure only 5 m off: "vertex 105 is 5 m further along from vertex 5 than it is". With DCS's
-  // Phi at the stated noise (the default) the joint check keeps it: it passes every test there.
-  // The checked graph's variance factor is about (1/20)^2, and at that noise the recalibrated
-  // check drops it, and the map is the outlier-free one.
+  // Phi at the stated noise the joint check alone keeps it: it passes every test there. The
+  // checked graph's variance factor is about (1/20)^2, below the threshold, and at that noise
+  // the recalibrated check (the default) drops it, and the map is the outlier-free one.
   testing::TrueGraph t = testing::square_laps(3, 10, 2, 2.0, 11, 0.05);
   const std::vector<Pose2> outlier_free =
       solve_robust(t.graph, RobustMethod::ls, {}, "outlier-free").poses;
@@ -157,22 +158,74 @@ TEST(Robust, TheRecalibratedCheckDropsAFalseClosureTheStatedNoiseHides) {
   const std::size_t closures = split_chain(t.graph, "t").closures.size();
   std::vector<bool> outlier(closures, false);
   outlier.back() = true;
-  RobustSettings recalibrate;
-  recalibrate.recalibrate = true;
+  RobustSettings never;
+  never.recalibrate_below = 0.0;
   for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
-    const RobustResult checked = solve_robust(t.graph, method, {}, "t");
+    const RobustResult checked = solve_robust(t.graph, method, never, "t");
     EXPECT_TRUE(checked.accepted.back()) << to_string(method);
-    EXPECT_FALSE(checked.variance_factor);
+    EXPECT_TRUE(checked.variance_factor && !checked.core);
     EXPECT_GT(max_position_error(checked.poses, outlier_free), 0.05) << to_string(method);
 
-    const RobustResult r = solve_robust(t.graph, method, recalibrate, "t");
+    const RobustResult r = solve_robust(t.graph, method, {}, "t");
     ASSERT_TRUE(r.variance_factor && r.core);
+    EXPECT_EQ(*r.variance_factor, *checked.variance_factor);
     EXPECT_GT(*r.variance_factor, 0.25 * 0.0025);
     EXPECT_LT(*r.variance_factor, 4.0 * 0.0025);
     const AcceptanceScores sc = score_acceptance(r.accepted, outlier);
     EXPECT_EQ(sc.accepted_outliers, 0U) << to_string(method);
     EXPECT_EQ(*sc.recall, 1.0) << to_string(method);
     EXPECT_LT(max_position_error(r.poses, outlier_free), 1e-4) << to_string(method);
+  }
+}
+
+TEST(Robust, TheShownVarianceFactorLeavesOutTheClosuresItFindsGross) {
+  // Four poses at the origin; every edge measures a pure translation t with identity
+  // information, so its chi2 is t^2: odometry 0.1 each, closures 0.2, 0.2 and 100. 6 edges x 3
+  // - 3 free poses x 3 = 9 degrees of freedom: f = 100.7 / 9 = 11.19. With c2 = 5 the closure
+  // of chi2 100 exceeds 5 f = 55.9 and goes: f = 0.7 / 6, and 0.2 stays below 5 f = 0.58. With
+  // c2 = 11.34 it stays (100 < 126.9). Without closures there is no redundancy.
+  PoseGraph g;
+  g.vertices.assign(4, Pose2{});
+  const auto edge = [](std::size_t from, std::size_t to, double chi2) {
+    return PoseGraphEdge{from, to, Pose2{std::sqrt(chi2), 0.0, 0.0}, Eigen::Matrix3d::Identity()};
+  };
+  g.edges = {edge(0, 1, 0.1), edge(1, 2, 0.1), edge(2, 3, 0.1),
+             edge(0, 2, 0.2), edge(1, 3, 0.2), edge(0, 3, 100.0)};
+  const ChainSplit split = split_chain(g, "t");
+  ASSERT_EQ(split.closures.size(), 3U);
+  const std::vector<Pose2> poses(4);
+  const std::vector<bool> all(3, true), two{true, true, false}, none(3, false);
+  EXPECT_NEAR(*shown_variance_factor(g, split, all, poses, 5.0), 0.7 / 6.0, 1e-12);
+  EXPECT_NEAR(*shown_variance_factor(g, split, all, poses, 11.34), 100.7 / 9.0, 1e-12);
+  EXPECT_NEAR(*shown_variance_factor(g, split, two, poses, 11.34), 0.7 / 6.0, 1e-12);
+  EXPECT_FALSE(shown_variance_factor(g, split, none, poses, 5.0));
+  EXPECT_THROW(shown_variance_factor(g, split, two, std::vector<Pose2>(3), 5.0),
+               std::invalid_argument);
+  EXPECT_THROW(shown_variance_factor(g, split, {true}, poses, 5.0), std::invalid_argument);
+}
+
+TEST(Robust, TheCheckIsRecalibratedOnlyWhereTheGraphStatesItsNoiseMuchWider) {
+  // The same graph stating its noise as it is (variance factor about 1) and 20 times wider
+  // (about 1/400): only the second is recalibrated by default (threshold 0.13); on the first
+  // the default decides as without recalibration, and infinity recalibrates it all the same.
+  const testing::TrueGraph honest = testing::square_laps(3, 10, 2, 0.1, 4, 1.0);
+  testing::TrueGraph overstated = honest;
+  for (PoseGraphEdge& e : overstated.graph.edges) e.information /= 400.0;
+  RobustSettings never, always;
+  never.recalibrate_below = 0.0;
+  always.recalibrate_below = std::numeric_limits<double>::infinity();
+  for (const RobustMethod method : {RobustMethod::pcm_exact, RobustMethod::pcm_aco}) {
+    const RobustResult as_stated = solve_robust(honest.graph, method, {}, "t");
+    ASSERT_TRUE(as_stated.variance_factor);
+    EXPECT_GT(*as_stated.variance_factor, 0.5) << to_string(method);
+    EXPECT_LT(*as_stated.variance_factor, 1.5) << to_string(method);
+    EXPECT_FALSE(as_stated.core) << to_string(method);
+    EXPECT_EQ(as_stated.accepted, solve_robust(honest.graph, method, never, "t").accepted);
+    EXPECT_TRUE(solve_robust(honest.graph, method, always, "t").core) << to_string(method);
+
+    const RobustResult wider = solve_robust(overstated.graph, method, {}, "t");
+    ASSERT_TRUE(wider.variance_factor && wider.core) << to_string(method);
+    EXPECT_LT(*wider.variance_factor, 1.5 / 400.0) << to_string(method);
   }
 }
 
@@ -300,10 +353,11 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
     s.check_phi = phi;
     EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
   }
-  s = {};
-  s.recalibrate = true;
-  s.check_clique = false;  // the recalibrated check follows the joint check
-  EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  for (const double below : {-0.1, std::nan("")}) {
+    s = {};
+    s.recalibrate_below = below;
+    EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  }
 }
 
 }  // namespace
