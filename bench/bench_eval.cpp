@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <random>
 
-#include "eval/association.hpp"
-#include "eval/evaluation.hpp"
-#include "eval/relations.hpp"
+#include "antslam/eval/association.hpp"
+#include "antslam/eval/evaluation.hpp"
+#include "antslam/eval/relations.hpp"
 
 namespace {
 

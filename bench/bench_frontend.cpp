@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "frontend/frontend.hpp"
-#include "frontend/laser_log.hpp"
-#include "frontend/scan_matcher.hpp"
-#include "slamgraph/trajectory.hpp"
+#include "antslam/frontend/frontend.hpp"
+#include "antslam/frontend/laser_log.hpp"
+#include "antslam/frontend/scan_matcher.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 
 namespace {
 

@@ -9,8 +9,8 @@
 
 #include <vector>
 
-#include "frontend/nees.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/nees.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace {
 

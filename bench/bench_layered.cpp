@@ -1,8 +1,8 @@
 // Throughput of the engine on the synthetic layered problem, serial.
 #include <benchmark/benchmark.h>
 
-#include "aco/synthetic_layered.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
+#include "antslam/aco/variants.hpp"
 
 namespace {
 

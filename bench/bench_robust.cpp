@@ -5,12 +5,12 @@
 
 #include <cstdint>
 
-#include "clique/aco_search.hpp"
-#include "clique/graph.hpp"
-#include "slamgraph/chain.hpp"
-#include "slamgraph/consistency.hpp"
-#include "slamgraph/g2o.hpp"
-#include "slamgraph/outliers.hpp"
+#include "antslam/clique/aco_search.hpp"
+#include "antslam/clique/graph.hpp"
+#include "antslam/slamgraph/chain.hpp"
+#include "antslam/slamgraph/consistency.hpp"
+#include "antslam/slamgraph/g2o.hpp"
+#include "antslam/slamgraph/outliers.hpp"
 
 namespace {
 

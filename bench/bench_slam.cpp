@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "aco/backend_tbb.hpp"
+#include "antslam/aco/backend_tbb.hpp"
 
-#include "slamgraph/optimize.hpp"
-#include "slamgraph/slam_problem.hpp"
-#include "slamgraph/synth.hpp"
-#include "slamgraph/trials.hpp"
+#include "antslam/slamgraph/optimize.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
+#include "antslam/slamgraph/synth.hpp"
+#include "antslam/slamgraph/trials.hpp"
 
 namespace {
 

@@ -15,14 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "aco/backend_omp.hpp"
-#include "aco/permutation_family.hpp"
-#include "aco/rules.hpp"
-#include "aco/update_mmas.hpp"
-#include "tsp/generator.hpp"
-#include "tsp/local_search.hpp"
-#include "tsp/problem.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/aco/backend_omp.hpp"
+#include "antslam/aco/permutation_family.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/aco/update_mmas.hpp"
+#include "antslam/tsp/generator.hpp"
+#include "antslam/tsp/local_search.hpp"
+#include "antslam/tsp/problem.hpp"
+#include "antslam/tsp/tsplib.hpp"
 
 namespace {
 

@@ -14,12 +14,12 @@
 #include <map>
 #include <memory>
 
-#include "aco/backend_factory.hpp"
-#include "aco/variants.hpp"
-#include "tsp/generator.hpp"
-#include "tsp/local_search.hpp"
-#include "tsp/problem.hpp"
-#include "tsp/solver.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/variants.hpp"
+#include "antslam/tsp/generator.hpp"
+#include "antslam/tsp/local_search.hpp"
+#include "antslam/tsp/problem.hpp"
+#include "antslam/tsp/solver.hpp"
 
 namespace {
 

@@ -9,5 +9,5 @@ cmake --build build -j "$(nproc)" --target antslam
 # AntSLAM on the bundled one-loop Malaga log (laser 0.78 m ahead of the robot origin, as the
 # log's header says): frontend, hybrid ACO + NLopt, corrected trajectory, maps, report.
 # (The former TSP demo is documented in docs/tsp.md.)
-build/experiments/antslam map data/laser/malaga-oneloop.clf --laser-offset 0.78 \
+build/app/antslam map data/laser/malaga-oneloop.clf --laser-offset 0.78 \
   --out-dir results/demo/malaga-oneloop

@@ -42,7 +42,7 @@ case "${1:-}" in
   --fuzz)
     build_dir=build-fuzz
     cmake_args=("${sanitizer_build[@]}" -DANTSLAM_BUILD_FUZZ=ON -DANTSLAM_BUILD_TESTS=OFF
-                -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_EXPERIMENTS=OFF -DANTSLAM_BUILD_PYTHON=OFF)
+                -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_APP=OFF -DANTSLAM_BUILD_PYTHON=OFF)
     targets=(--target fuzzers)
     ;;
   "") ;;

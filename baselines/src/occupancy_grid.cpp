@@ -1,11 +1,11 @@
-#include "baselines/occupancy_grid.hpp"
+#include "antslam/baselines/occupancy_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "frontend/distance_field.hpp"
+#include "antslam/frontend/distance_field.hpp"
 
 namespace antslam::baselines {
 

@@ -1,11 +1,11 @@
-#include "baselines/tinyslam.hpp"
+#include "antslam/baselines/tinyslam.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
 
 namespace antslam::baselines {
 

@@ -1,14 +1,14 @@
-#include "clique/aco_search.hpp"
+#include "antslam/clique/aco_search.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
-#include "aco/backend_factory.hpp"
-#include "clique/exact.hpp"
-#include "clique/greedy.hpp"
-#include "clique/local_search.hpp"
-#include "clique/problem.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/clique/exact.hpp"
+#include "antslam/clique/greedy.hpp"
+#include "antslam/clique/local_search.hpp"
+#include "antslam/clique/problem.hpp"
 
 namespace antslam::clique {
 

@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
+#include "antslam/clique/graph.hpp"
 #include "bits.hpp"
-#include "clique/graph.hpp"
 
 namespace antslam::clique::detail {
 

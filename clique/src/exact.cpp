@@ -1,4 +1,4 @@
-#include "clique/exact.hpp"
+#include "antslam/clique/exact.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "antslam/clique/greedy.hpp"
 #include "bits.hpp"
-#include "clique/greedy.hpp"
 #include "colouring.hpp"
 
 namespace antslam::clique {

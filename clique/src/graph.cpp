@@ -1,4 +1,4 @@
-#include "clique/graph.hpp"
+#include "antslam/clique/graph.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "clique/greedy.hpp"
+#include "antslam/clique/greedy.hpp"
 
 #include <algorithm>
 #include <chrono>

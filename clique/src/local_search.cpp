@@ -1,4 +1,4 @@
-#include "clique/local_search.hpp"
+#include "antslam/clique/local_search.hpp"
 
 #include <algorithm>
 #include <bit>

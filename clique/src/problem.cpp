@@ -1,4 +1,4 @@
-#include "clique/problem.hpp"
+#include "antslam/clique/problem.hpp"
 
 namespace antslam::clique {
 

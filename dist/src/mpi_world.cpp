@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "dist/communicator.hpp"
+#include "antslam/dist/communicator.hpp"
 
 namespace antslam::dist {
 namespace {

@@ -1,4 +1,4 @@
-#include "dist/outcome.hpp"
+#include "antslam/dist/outcome.hpp"
 
 namespace antslam::dist {
 

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "dist/communicator.hpp"
+#include "antslam/dist/communicator.hpp"
 
 namespace antslam::dist {
 

@@ -1,4 +1,4 @@
-#include "eval/alignment.hpp"
+#include "antslam/eval/alignment.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "eval/association.hpp"
+#include "antslam/eval/association.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <set>
 #include <tuple>
 
-#include "eval/detail/validation.hpp"
+#include "antslam/eval/detail/validation.hpp"
 
 namespace antslam::eval {
 

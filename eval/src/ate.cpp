@@ -1,11 +1,11 @@
-#include "eval/ate.hpp"
+#include "antslam/eval/ate.hpp"
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "eval/alignment.hpp"
-#include "eval/relative_error.hpp"
+#include "antslam/eval/alignment.hpp"
+#include "antslam/eval/relative_error.hpp"
 
 namespace antslam::eval {
 

@@ -1,12 +1,12 @@
-#include "eval/evaluation.hpp"
+#include "antslam/eval/evaluation.hpp"
 
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "eval/alignment.hpp"
-#include "eval/association.hpp"
+#include "antslam/eval/alignment.hpp"
+#include "antslam/eval/association.hpp"
 
 namespace antslam::eval {
 

@@ -1,11 +1,11 @@
-#include "eval/fragment_set_check.hpp"
+#include "antslam/eval/fragment_set_check.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
-#include "eval/association.hpp"
+#include "antslam/eval/association.hpp"
 
 namespace antslam::eval {
 

@@ -1,4 +1,4 @@
-#include "eval/relations.hpp"
+#include "antslam/eval/relations.hpp"
 
 #include <array>
 #include <charconv>
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "slamgraph/trajectory.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 
 namespace antslam::eval {
 

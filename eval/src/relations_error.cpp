@@ -1,13 +1,13 @@
-#include "eval/relations_error.hpp"
+#include "antslam/eval/relations_error.hpp"
 
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
-#include "eval/association.hpp"
-#include "eval/detail/validation.hpp"
-#include "eval/relative_error.hpp"
+#include "antslam/eval/association.hpp"
+#include "antslam/eval/detail/validation.hpp"
+#include "antslam/eval/relative_error.hpp"
 
 namespace antslam::eval {
 

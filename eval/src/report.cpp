@@ -1,10 +1,10 @@
-#include "eval/report.hpp"
+#include "antslam/eval/report.hpp"
 
 #include <cstdio>
 #include <ostream>
 #include <string>
 
-#include "eval/relative_error.hpp"
+#include "antslam/eval/relative_error.hpp"
 
 namespace antslam::eval {
 

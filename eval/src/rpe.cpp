@@ -1,4 +1,4 @@
-#include "eval/rpe.hpp"
+#include "antslam/eval/rpe.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "eval/relative_error.hpp"
+#include "antslam/eval/relative_error.hpp"
 
 namespace antslam::eval {
 

@@ -1,4 +1,4 @@
-#include "eval/statistics.hpp"
+#include "antslam/eval/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "eval/detail/validation.hpp"
+#include "antslam/eval/detail/validation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 # instances on which irace's choices were checked (docs/tsp-results.md, "irace").
 set -eu
 here="$(cd "$(dirname "$0")" && pwd)"
-exe="${ANTSLAM:-$here/../../build/experiments/antslam}"
+exe="${ANTSLAM:-$here/../../build/app/antslam}"
 dir="${1:-instances}"
 sizes="${SIZES:-500 1000 2000 5000 10000 20000}"
 base="${SEED_BASE:-1000}"

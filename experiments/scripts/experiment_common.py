@@ -77,7 +77,7 @@ def parser(description, default_out):
     """The options every experiment has."""
     p = OneLineErrorParser(description=description,
                            formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--antslam", default=os.path.join(ROOT, "build", "experiments", "antslam"),
+    p.add_argument("--antslam", default=os.path.join(ROOT, "build", "app", "antslam"),
                    help="the antslam program (build it first: cmake --build build --target "
                         "antslam)")
     p.add_argument("--out", default=os.path.join(ROOT, "results", default_out),

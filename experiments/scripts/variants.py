@@ -35,7 +35,7 @@ def budgets(args):
     iterations = 300 if args.quick else 3000
     seconds = 0.01 if args.quick else 0.05
     return {"evaluations": ["--iterations", iterations],
-            "time": ["--iterations", 10**9, "--time-limit", seconds]}, iterations * ANTS, seconds
+            "time": ["--iterations", 10**9, "--time", seconds]}, iterations * ANTS, seconds
 
 
 def run_method(args, name, path, method, budget, extra):

@@ -1,4 +1,4 @@
-#include "frontend/branch_and_bound.hpp"
+#include "antslam/frontend/branch_and_bound.hpp"
 
 #include <algorithm>
 #include <cmath>

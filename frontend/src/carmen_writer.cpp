@@ -1,4 +1,4 @@
-#include "frontend/carmen_writer.hpp"
+#include "antslam/frontend/carmen_writer.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "frontend/correlative_search.hpp"
+#include "antslam/frontend/correlative_search.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "frontend/distance_field.hpp"
+#include "antslam/frontend/distance_field.hpp"
 
 #include <algorithm>
 #include <cmath>

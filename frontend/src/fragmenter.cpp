@@ -1,10 +1,10 @@
-#include "frontend/fragmenter.hpp"
+#include "antslam/frontend/fragmenter.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "aco/random.hpp"
-#include "frontend/pose_covariance.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 
 namespace antslam::frontend {
 

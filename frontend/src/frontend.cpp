@@ -1,4 +1,4 @@
-#include "frontend/frontend.hpp"
+#include "antslam/frontend/frontend.hpp"
 
 #include <chrono>
 #include <filesystem>

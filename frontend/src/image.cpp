@@ -1,4 +1,4 @@
-#include "frontend/image.hpp"
+#include "antslam/frontend/image.hpp"
 
 #include <png.h>
 

@@ -1,4 +1,4 @@
-#include "frontend/laser_log.hpp"
+#include "antslam/frontend/laser_log.hpp"
 
 #include <zlib.h>
 
@@ -13,7 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "frontend/sensor_check.hpp"
+#include "antslam/frontend/sensor_check.hpp"
 
 namespace antslam::frontend {
 

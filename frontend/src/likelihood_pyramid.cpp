@@ -1,4 +1,4 @@
-#include "frontend/likelihood_pyramid.hpp"
+#include "antslam/frontend/likelihood_pyramid.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "frontend/loop_closer.hpp"
+#include "antslam/frontend/loop_closer.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "frontend/pose_covariance.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 
 namespace antslam::frontend {
 

@@ -1,11 +1,11 @@
-#include "frontend/loop_closure.hpp"
+#include "antslam/frontend/loop_closure.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-#include "frontend/branch_and_bound.hpp"
+#include "antslam/frontend/branch_and_bound.hpp"
 #include "setting_checks.hpp"
 
 namespace antslam::frontend {

@@ -1,4 +1,4 @@
-#include "frontend/map_render.hpp"
+#include "antslam/frontend/map_render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/random.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::frontend {
 

@@ -1,4 +1,4 @@
-#include "frontend/nees.hpp"
+#include "antslam/frontend/nees.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,9 +1,9 @@
-#include "frontend/odometry_benchmark.hpp"
+#include "antslam/frontend/odometry_benchmark.hpp"
 
 #include <utility>
 #include <vector>
 
-#include "aco/random.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::frontend {
 

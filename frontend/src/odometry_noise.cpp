@@ -1,10 +1,10 @@
-#include "frontend/odometry_noise.hpp"
+#include "antslam/frontend/odometry_noise.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
 
 namespace antslam::frontend {
 

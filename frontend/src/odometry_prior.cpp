@@ -1,4 +1,4 @@
-#include "frontend/odometry_prior.hpp"
+#include "antslam/frontend/odometry_prior.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>

@@ -1,4 +1,4 @@
-#include "frontend/pose_covariance.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "frontend/pose_likelihood.hpp"
+#include "antslam/frontend/pose_likelihood.hpp"
 
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-#include "frontend/pose_covariance.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 
 namespace antslam::frontend {
 

@@ -1,4 +1,4 @@
-#include "frontend/report.hpp"
+#include "antslam/frontend/report.hpp"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "frontend/scan_matcher.hpp"
+#include "antslam/frontend/scan_matcher.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "frontend/pose_covariance.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 #include "setting_checks.hpp"
 
 namespace antslam::frontend {

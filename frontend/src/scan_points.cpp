@@ -1,10 +1,10 @@
-#include "frontend/scan_points.hpp"
+#include "antslam/frontend/scan_points.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <unordered_set>
 
-#include "frontend/distance_field.hpp"
+#include "antslam/frontend/distance_field.hpp"
 
 namespace antslam::frontend {
 

@@ -1,4 +1,4 @@
-#include "frontend/sensor_check.hpp"
+#include "antslam/frontend/sensor_check.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "frontend/odometry_noise.hpp"
-#include "slamgraph/gaussian2.hpp"
+#include "antslam/frontend/odometry_noise.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
 
 namespace antslam::frontend {
 

@@ -1,11 +1,11 @@
-#include "frontend/uncertainty_graph.hpp"
+#include "antslam/frontend/uncertainty_graph.hpp"
 
 #include <functional>
 #include <queue>
 #include <stdexcept>
 #include <utility>
 
-#include "frontend/pose_covariance.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 
 namespace antslam::frontend {
 

@@ -1,4 +1,4 @@
-#include "mapping/close_loops.hpp"
+#include "antslam/mapping/close_loops.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "slamgraph/name_table.hpp"
+#include "antslam/slamgraph/name_table.hpp"
 
 namespace antslam::mapping {
 

@@ -1,10 +1,10 @@
-#include "mapping/optimize_map.hpp"
+#include "antslam/mapping/optimize_map.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "slamgraph/trials.hpp"
+#include "antslam/slamgraph/trials.hpp"
 
 namespace antslam::mapping {
 

@@ -1,4 +1,4 @@
-#include "mapping/pipeline.hpp"
+#include "antslam/mapping/pipeline.hpp"
 
 #include <chrono>
 #include <cstdio>

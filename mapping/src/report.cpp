@@ -1,12 +1,12 @@
-#include "mapping/report.hpp"
+#include "antslam/mapping/report.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "eval/report.hpp"
-#include "frontend/report.hpp"
-#include "slamgraph/refine.hpp"
-#include "slamgraph/trials.hpp"
+#include "antslam/eval/report.hpp"
+#include "antslam/frontend/report.hpp"
+#include "antslam/slamgraph/refine.hpp"
+#include "antslam/slamgraph/trials.hpp"
 
 namespace antslam::mapping {
 

@@ -1,4 +1,4 @@
-#include "mapping/verdict.hpp"
+#include "antslam/mapping/verdict.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "slamgraph/pose2.hpp"
-#include "slamgraph/trajectory.hpp"
+#include "antslam/slamgraph/pose2.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 
 namespace antslam::python {
 

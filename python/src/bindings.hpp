@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "aco/backend_kind.hpp"
+#include "antslam/aco/backend_kind.hpp"
 
 namespace antslam::python {
 

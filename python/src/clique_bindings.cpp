@@ -9,12 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include "aco/backend_factory.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/clique/aco_search.hpp"
+#include "antslam/clique/exact.hpp"
+#include "antslam/clique/greedy.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "clique/aco_search.hpp"
-#include "clique/exact.hpp"
-#include "clique/greedy.hpp"
 #include "interrupt.hpp"
 
 namespace antslam::python {

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "aco/colony.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/colony.hpp"
+#include "antslam/aco/variants.hpp"
 #include "bindings.hpp"
 #include "interrupt.hpp"
 

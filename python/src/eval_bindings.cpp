@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "antslam/eval/evaluation.hpp"
+#include "antslam/eval/relations.hpp"
+#include "antslam/eval/report.hpp"
+#include "antslam/io/atomic_file.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "cli/atomic_file.hpp"
-#include "eval/evaluation.hpp"
-#include "eval/relations.hpp"
-#include "eval/report.hpp"
 
 namespace antslam::python {
 
@@ -108,7 +108,7 @@ void bind_eval(py::module_& m) {
       "write_tum",
       [](const std::filesystem::path& path, const DoubleArray& trajectory) {
         const slam::Trajectory t = trajectory_from(trajectory, "trajectory");
-        cli::write_atomically(path, [&](std::ostream& out) { slam::write_tum(out, t); });
+        io::write_atomically(path, [&](std::ostream& out) { slam::write_tum(out, t); });
       },
       py::arg("path"), py::arg("trajectory"), "Writes an (n, 4) trajectory as TUM (atomically)");
 }

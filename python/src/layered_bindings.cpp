@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/backend_factory.hpp"
+#include "antslam/aco/backend_factory.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "engine.hpp"

@@ -7,12 +7,12 @@
 #include <optional>
 #include <string>
 
+#include "antslam/frontend/report.hpp"
+#include "antslam/mapping/pipeline.hpp"
+#include "antslam/mapping/report.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "frontend/report.hpp"
 #include "interrupt.hpp"
-#include "mapping/pipeline.hpp"
-#include "mapping/report.hpp"
 
 namespace antslam::python {
 

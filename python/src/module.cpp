@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "antslam/version.hpp"
 #include "bindings.hpp"
 
 namespace antslam::python {
@@ -25,7 +26,7 @@ aco::BackendKind backend_from(const std::string& name) {
 PYBIND11_MODULE(_core, m) {
   using namespace antslam::python;
   m.doc() = "antslam: ant colony optimization for SLAM map optimization and the TSP";
-  m.attr("__version__") = ANTSLAM_VERSION;
+  m.attr("__version__") = antslam::kVersion;
   py::module_ aco = m.def_submodule("aco", "The colony engine: parameters and layered problems");
   bind_engine(aco);
   bind_layered(aco);

@@ -9,14 +9,14 @@
 #include <utility>
 #include <vector>
 
+#include "antslam/clique/graph.hpp"
+#include "antslam/slamgraph/consistency.hpp"
+#include "antslam/slamgraph/outliers.hpp"
+#include "antslam/slamgraph/robust.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "clique/graph.hpp"
 #include "interrupt.hpp"
 #include "slam_types.hpp"
-#include "slamgraph/consistency.hpp"
-#include "slamgraph/outliers.hpp"
-#include "slamgraph/robust.hpp"
 
 namespace antslam::python {
 

@@ -9,13 +9,13 @@
 #include <utility>
 #include <vector>
 
+#include "antslam/io/atomic_file.hpp"
+#include "antslam/slamgraph/fragment_set_io.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
+#include "antslam/slamgraph/synth.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "cli/atomic_file.hpp"
 #include "slam_types.hpp"
-#include "slamgraph/fragment_set_io.hpp"
-#include "slamgraph/graph_structure.hpp"
-#include "slamgraph/synth.hpp"
 
 namespace antslam::python {
 
@@ -79,8 +79,8 @@ void bind_fragment_set(py::module_& m) {
       .def(
           "save",
           [](const slam::FragmentSet& s, const std::filesystem::path& path) {
-            cli::write_atomically(path,
-                                  [&](std::ostream& out) { slam::write_fragment_set(out, s); });
+            io::write_atomically(path,
+                                 [&](std::ostream& out) { slam::write_fragment_set(out, s); });
           },
           py::arg("path"), "Writes the set as fragment-set JSON (atomically)")
       .def("__repr__", [](const slam::FragmentSet& s) {
@@ -183,7 +183,7 @@ void bind_pose_graph(py::module_& m) {
       .def(
           "save",
           [](const NamedGraph& g, const std::filesystem::path& path) {
-            cli::write_atomically(
+            io::write_atomically(
                 path, [&](std::ostream& out) { slam::write_pose_graph(out, g.graph, path); });
           },
           py::arg("path"), "Writes g2o lines, or TORO lines for a .graph name (atomically)")

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "antslam/slamgraph/graph_optimize.hpp"
+#include "antslam/slamgraph/result_io.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "engine.hpp"
 #include "slam_types.hpp"
-#include "slamgraph/graph_optimize.hpp"
-#include "slamgraph/result_io.hpp"
 
 namespace antslam::python {
 

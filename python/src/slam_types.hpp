@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "slamgraph/g2o.hpp"
+#include "antslam/slamgraph/g2o.hpp"
 
 namespace antslam::python {
 

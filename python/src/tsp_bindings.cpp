@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "antslam/io/atomic_file.hpp"
+#include "antslam/tsp/generator.hpp"
+#include "antslam/tsp/optima.hpp"
+#include "antslam/tsp/solver.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "cli/atomic_file.hpp"
 #include "engine.hpp"
-#include "tsp/generator.hpp"
-#include "tsp/optima.hpp"
-#include "tsp/solver.hpp"
-#include "tsp/tsplib.hpp"
 
 namespace antslam::python {
 
@@ -111,7 +111,7 @@ void bind_tsp(py::module_& m) {
           [](const tsp::Instance& i, const std::filesystem::path& path, const py::object& tour,
              const std::string& comment) {
             const std::vector<std::uint32_t> t = tour_of(i, tour);
-            cli::write_atomically(path, [&](std::ostream& out) {
+            io::write_atomically(path, [&](std::ostream& out) {
               tsp::write_tour(out, i.name() + ".tour", t, comment);
             });
           },
@@ -120,7 +120,7 @@ void bind_tsp(py::module_& m) {
       .def(
           "save",
           [](const tsp::Instance& i, const std::filesystem::path& path) {
-            cli::write_atomically(path, [&](std::ostream& out) { tsp::write_instance(out, i); });
+            io::write_atomically(path, [&](std::ostream& out) { tsp::write_instance(out, i); });
           },
           py::arg("path"), "Writes the instance as a TSPLIB file (atomically)")
       .def("__repr__", [](const tsp::Instance& i) {

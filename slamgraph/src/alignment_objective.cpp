@@ -1,4 +1,4 @@
-#include "slamgraph/alignment_objective.hpp"
+#include "antslam/slamgraph/alignment_objective.hpp"
 
 #include <cmath>
 #include <stdexcept>

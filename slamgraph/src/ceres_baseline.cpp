@@ -1,4 +1,4 @@
-#include "slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/ceres_baseline.hpp"
 
 #include <ceres/ceres.h>
 #include <glog/logging.h>

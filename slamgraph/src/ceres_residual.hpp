@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "slamgraph/ceres_baseline.hpp"
-#include "slamgraph/pose2.hpp"
+#include "antslam/slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/pose2.hpp"
 
 namespace antslam::slam::detail {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/chain.hpp"
+#include "antslam/slamgraph/chain.hpp"
 
 #include <limits>
 #include <stdexcept>

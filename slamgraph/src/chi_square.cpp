@@ -1,4 +1,4 @@
-#include "slamgraph/chi_square.hpp"
+#include "antslam/slamgraph/chi_square.hpp"
 
 #include <cmath>
 #include <numbers>

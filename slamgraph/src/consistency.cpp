@@ -1,4 +1,4 @@
-#include "slamgraph/consistency.hpp"
+#include "antslam/slamgraph/consistency.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/backend_factory.hpp"
-#include "slamgraph/chi_square.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/slamgraph/chi_square.hpp"
 
 namespace antslam::slam {
 

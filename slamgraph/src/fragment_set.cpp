@@ -1,4 +1,4 @@
-#include "slamgraph/fragment_set.hpp"
+#include "antslam/slamgraph/fragment_set.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "slamgraph/fragment_set_io.hpp"
+#include "antslam/slamgraph/fragment_set_io.hpp"
 
 #include <fstream>
 #include <iterator>

@@ -1,4 +1,4 @@
-#include "slamgraph/g2o.hpp"
+#include "antslam/slamgraph/g2o.hpp"
 
 #include <Eigen/Cholesky>
 #include <algorithm>
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "slamgraph/graph_structure.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
 #include "text_lines.hpp"
 
 namespace antslam::slam {

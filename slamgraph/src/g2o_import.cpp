@@ -4,9 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/random.hpp"
-#include "slamgraph/fragment_set_io.hpp"
-#include "slamgraph/g2o.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/slamgraph/fragment_set_io.hpp"
+#include "antslam/slamgraph/g2o.hpp"
 
 namespace antslam::slam {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
 
 #include <cmath>
 #include <numbers>

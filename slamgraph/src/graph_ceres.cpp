@@ -5,8 +5,8 @@
 #include <Eigen/Cholesky>
 #include <stdexcept>
 
+#include "antslam/slamgraph/graph_structure.hpp"
 #include "ceres_residual.hpp"
-#include "slamgraph/graph_structure.hpp"
 
 namespace antslam::slam::detail {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Ceres on a pose graph's vertex poses (graph_optimize.hpp).
 
-#include "slamgraph/ceres_baseline.hpp"
-#include "slamgraph/g2o.hpp"
+#include "antslam/slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/g2o.hpp"
 
 namespace antslam::slam::detail {
 

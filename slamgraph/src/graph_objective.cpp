@@ -1,11 +1,11 @@
-#include "slamgraph/graph_objective.hpp"
+#include "antslam/slamgraph/graph_objective.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "slamgraph/graph_structure.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
 
 namespace antslam::slam {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/graph_optimize.hpp"
+#include "antslam/slamgraph/graph_optimize.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "antslam/slamgraph/graph_objective.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
 #include "graph_ceres.hpp"
 #include "nlopt_stages.hpp"
 #include "optimize_detail.hpp"
-#include "slamgraph/graph_objective.hpp"
-#include "slamgraph/graph_structure.hpp"
 
 namespace antslam::slam {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/graph_structure.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "slamgraph/chain.hpp"
+#include "antslam/slamgraph/chain.hpp"
 
 namespace antslam::slam {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <string_view>
 
-#include "slamgraph/gaussian2.hpp"
-#include "slamgraph/pose2.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/pose2.hpp"
 
 namespace antslam::slam::detail {
 

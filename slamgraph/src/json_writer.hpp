@@ -6,8 +6,8 @@
 #include <ostream>
 #include <span>
 
-#include "slamgraph/gaussian2.hpp"
-#include "slamgraph/pose2.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/pose2.hpp"
 
 namespace antslam::slam::detail {
 

@@ -17,7 +17,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "slamgraph/refine.hpp"
+#include "antslam/slamgraph/refine.hpp"
 
 namespace antslam::slam::detail {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/optimize.hpp"
+#include "antslam/slamgraph/optimize.hpp"
 
 #include <array>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <string>
 #include <string_view>
 
+#include "antslam/slamgraph/search_baselines.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
 #include "optimize_detail.hpp"
-#include "slamgraph/search_baselines.hpp"
-#include "slamgraph/slam_problem.hpp"
 
 namespace antslam::slam {
 

@@ -2,9 +2,9 @@
 
 #include <optional>
 
-#include "aco/backend_factory.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
 #include "optimize_detail.hpp"
-#include "slamgraph/slam_problem.hpp"
 
 namespace antslam::slam::detail {
 

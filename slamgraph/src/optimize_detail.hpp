@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "slamgraph/optimize.hpp"
+#include "antslam/slamgraph/optimize.hpp"
 
 namespace antslam::slam::detail {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/outliers.hpp"
+#include "antslam/slamgraph/outliers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "aco/random.hpp"
-#include "slamgraph/gaussian2.hpp"
-#include "slamgraph/name_table.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/name_table.hpp"
 #include "text_lines.hpp"
 
 namespace antslam::slam {

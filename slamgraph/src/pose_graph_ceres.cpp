@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "antslam/slamgraph/ceres_baseline.hpp"
 #include "ceres_residual.hpp"
-#include "slamgraph/ceres_baseline.hpp"
 
 namespace antslam::slam {
 

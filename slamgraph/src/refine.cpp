@@ -1,4 +1,4 @@
-#include "slamgraph/refine.hpp"
+#include "antslam/slamgraph/refine.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "slamgraph/result_io.hpp"
+#include "antslam/slamgraph/result_io.hpp"
 
 #include <charconv>
 #include <fstream>

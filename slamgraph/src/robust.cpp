@@ -1,12 +1,12 @@
-#include "slamgraph/robust.hpp"
+#include "antslam/slamgraph/robust.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "antslam/slamgraph/chi_square.hpp"
+#include "antslam/slamgraph/name_table.hpp"
 #include "robust_detail.hpp"
-#include "slamgraph/chi_square.hpp"
-#include "slamgraph/name_table.hpp"
 
 namespace antslam::slam {
 

@@ -4,10 +4,10 @@
 #include <chrono>
 #include <vector>
 
-#include "slamgraph/ceres_baseline.hpp"
-#include "slamgraph/chain.hpp"
-#include "slamgraph/g2o.hpp"
-#include "slamgraph/robust.hpp"
+#include "antslam/slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/chain.hpp"
+#include "antslam/slamgraph/g2o.hpp"
+#include "antslam/slamgraph/robust.hpp"
 
 namespace antslam::slam::detail {
 

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "clique/graph.hpp"
+#include "antslam/clique/graph.hpp"
+#include "antslam/slamgraph/consistency.hpp"
 #include "robust_detail.hpp"
-#include "slamgraph/consistency.hpp"
 
 namespace antslam::slam {
 

@@ -1,11 +1,11 @@
-#include "slamgraph/search_baselines.hpp"
+#include "antslam/slamgraph/search_baselines.hpp"
 
 #include <chrono>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "aco/random.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::slam {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/slam_problem.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
 
 #include <algorithm>
 #include <cmath>

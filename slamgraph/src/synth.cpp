@@ -1,4 +1,4 @@
-#include "slamgraph/synth.hpp"
+#include "antslam/slamgraph/synth.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/random.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::slam {
 

@@ -1,4 +1,4 @@
-#include "slamgraph/trajectory.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>

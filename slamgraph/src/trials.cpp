@@ -1,4 +1,4 @@
-#include "slamgraph/trials.hpp"
+#include "antslam/slamgraph/trials.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/backend_factory.hpp"
-#include "aco/random.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::slam {
 

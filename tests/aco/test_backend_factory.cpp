@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/backend_factory.hpp"
-#include "aco/synthetic_layered.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
+#include "antslam/aco/variants.hpp"
 
 namespace antslam::aco {
 namespace {

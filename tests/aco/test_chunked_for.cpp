@@ -13,15 +13,15 @@
 #include <span>
 #include <vector>
 
-#include "aco/backend_factory.hpp"
-#include "aco/chunked_for.hpp"
-#include "aco/edge_trail.hpp"
-#include "aco/layered_trail.hpp"
-#include "aco/subset_trail.hpp"
-#include "aco/update_acs.hpp"
-#include "aco/update_ant_system.hpp"
-#include "aco/update_hybrid.hpp"
-#include "aco/update_mmas.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/chunked_for.hpp"
+#include "antslam/aco/edge_trail.hpp"
+#include "antslam/aco/layered_trail.hpp"
+#include "antslam/aco/subset_trail.hpp"
+#include "antslam/aco/update_acs.hpp"
+#include "antslam/aco/update_ant_system.hpp"
+#include "antslam/aco/update_hybrid.hpp"
+#include "antslam/aco/update_mmas.hpp"
 
 namespace antslam::aco {
 namespace {

@@ -9,12 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include "aco/colony.hpp"
-#include "aco/focused_construction.hpp"
-#include "aco/rules.hpp"
-#include "aco/synthetic_layered.hpp"
-#include "aco/update_mmas.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/colony.hpp"
+#include "antslam/aco/focused_construction.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
+#include "antslam/aco/update_mmas.hpp"
+#include "antslam/aco/variants.hpp"
 #include "test_problems.hpp"
 
 namespace antslam::aco {

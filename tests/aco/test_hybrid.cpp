@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "aco/colony.hpp"
-#include "aco/rules.hpp"
-#include "aco/synthetic_layered.hpp"
-#include "aco/update_hybrid.hpp"
+#include "antslam/aco/colony.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
+#include "antslam/aco/update_hybrid.hpp"
 #include "test_problems.hpp"
 
 namespace antslam::aco {

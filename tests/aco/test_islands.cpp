@@ -17,12 +17,12 @@
 #include <utility>
 #include <vector>
 
-#include "aco/backend_factory.hpp"
-#include "aco/colony.hpp"
-#include "aco/islands.hpp"
-#include "aco/rules.hpp"
-#include "aco/update_mmas.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/colony.hpp"
+#include "antslam/aco/islands.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/aco/update_mmas.hpp"
+#include "antslam/aco/variants.hpp"
 #include "test_problems.hpp"
 
 namespace antslam::aco {

@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include "aco/layered_family.hpp"
-#include "aco/random.hpp"
-#include "aco/synthetic_layered.hpp"
+#include "antslam/aco/layered_family.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
 
 namespace antslam::aco {
 namespace {

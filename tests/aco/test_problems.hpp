@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "aco/solution.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/aco/solution.hpp"
 
 namespace antslam::aco::testing {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "aco/random.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::aco {
 namespace {

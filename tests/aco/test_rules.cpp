@@ -3,8 +3,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "aco/rules.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/aco/rules.hpp"
 
 namespace antslam::aco {
 namespace {

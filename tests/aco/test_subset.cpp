@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "aco/rules.hpp"
-#include "aco/subset_family.hpp"
-#include "aco/subset_trail.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/aco/subset_family.hpp"
+#include "antslam/aco/subset_trail.hpp"
+#include "antslam/aco/variants.hpp"
 #include "test_problems.hpp"
 
 namespace antslam::aco {

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "aco/edge_trail.hpp"
-#include "aco/layered_trail.hpp"
+#include "antslam/aco/edge_trail.hpp"
+#include "antslam/aco/layered_trail.hpp"
 
 namespace antslam::aco {
 namespace {

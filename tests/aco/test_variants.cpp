@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "aco/subset_trail.hpp"
-#include "aco/synthetic_layered.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/subset_trail.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
+#include "antslam/aco/variants.hpp"
 #include "test_problems.hpp"
 
 namespace antslam::aco {

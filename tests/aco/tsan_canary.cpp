@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <string_view>
 
-#include "aco/backend_omp.hpp"
-#include "aco/backend_tbb.hpp"
+#include "antslam/aco/backend_omp.hpp"
+#include "antslam/aco/backend_tbb.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;

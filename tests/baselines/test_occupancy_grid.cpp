@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "aco/random.hpp"
-#include "baselines/occupancy_grid.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/baselines/occupancy_grid.hpp"
 
 namespace antslam::baselines {
 namespace {

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "baselines/tinyslam.hpp"
-#include "eval/evaluation.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/baselines/tinyslam.hpp"
+#include "antslam/eval/evaluation.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::baselines {
 namespace {

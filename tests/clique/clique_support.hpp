@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "clique/graph.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/clique/graph.hpp"
 
 namespace antslam::clique::testing {
 

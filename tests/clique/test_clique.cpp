@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "clique/aco_search.hpp"
-#include "clique/exact.hpp"
-#include "clique/greedy.hpp"
-#include "clique/local_search.hpp"
-#include "clique/problem.hpp"
+#include "antslam/clique/aco_search.hpp"
+#include "antslam/clique/exact.hpp"
+#include "antslam/clique/greedy.hpp"
+#include "antslam/clique/local_search.hpp"
+#include "antslam/clique/problem.hpp"
 #include "clique_support.hpp"
 
 namespace antslam::clique {

@@ -23,9 +23,9 @@
 #include <tuple>
 #include <vector>
 
-#include "aco/backend_factory.hpp"
-#include "aco/variant.hpp"
-#include "aco/variants.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/variant.hpp"
+#include "antslam/aco/variants.hpp"
 
 namespace antslam::testing {
 

@@ -8,15 +8,15 @@
 #include <span>
 #include <vector>
 
-#include "aco/synthetic_layered.hpp"
-#include "clique/local_search.hpp"
-#include "clique/problem.hpp"
+#include "antslam/aco/synthetic_layered.hpp"
+#include "antslam/clique/local_search.hpp"
+#include "antslam/clique/problem.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
+#include "antslam/slamgraph/synth.hpp"
+#include "antslam/tsp/local_search.hpp"
+#include "antslam/tsp/problem.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "colony_contract.hpp"
-#include "slamgraph/slam_problem.hpp"
-#include "slamgraph/synth.hpp"
-#include "tsp/local_search.hpp"
-#include "tsp/problem.hpp"
-#include "tsp/tsplib.hpp"
 
 namespace antslam {
 namespace {

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "eval/alignment.hpp"
-#include "eval/ate.hpp"
+#include "antslam/eval/alignment.hpp"
+#include "antslam/eval/ate.hpp"
 #include "trajectories.hpp"
 
 namespace antslam::eval {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "eval/association.hpp"
+#include "antslam/eval/association.hpp"
 #include "trajectories.hpp"
 
 namespace antslam::eval {

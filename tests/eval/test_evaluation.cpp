@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "eval/alignment.hpp"
-#include "eval/evaluation.hpp"
-#include "eval/report.hpp"
+#include "antslam/eval/alignment.hpp"
+#include "antslam/eval/evaluation.hpp"
+#include "antslam/eval/report.hpp"
 #include "trajectories.hpp"
 
 namespace antslam::eval {

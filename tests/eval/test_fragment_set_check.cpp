@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "eval/fragment_set_check.hpp"
+#include "antslam/eval/fragment_set_check.hpp"
 
 namespace antslam::eval {
 namespace {

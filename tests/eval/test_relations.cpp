@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "eval/relations.hpp"
-#include "eval/relations_error.hpp"
-#include "eval/relative_error.hpp"
+#include "antslam/eval/relations.hpp"
+#include "antslam/eval/relations_error.hpp"
+#include "antslam/eval/relative_error.hpp"
 #include "trajectories.hpp"
 
 namespace antslam::eval {

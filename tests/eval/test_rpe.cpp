@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "eval/alignment.hpp"
-#include "eval/relative_error.hpp"
-#include "eval/rpe.hpp"
+#include "antslam/eval/alignment.hpp"
+#include "antslam/eval/relative_error.hpp"
+#include "antslam/eval/rpe.hpp"
 #include "trajectories.hpp"
 
 namespace antslam::eval {

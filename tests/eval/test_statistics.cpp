@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "eval/statistics.hpp"
+#include "antslam/eval/statistics.hpp"
 
 namespace antslam::eval {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "slamgraph/trajectory.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 
 namespace antslam::eval::testing {
 

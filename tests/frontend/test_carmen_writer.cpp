@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "frontend/carmen_writer.hpp"
-#include "frontend/laser_log.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/frontend/carmen_writer.hpp"
+#include "antslam/frontend/laser_log.hpp"
 
 namespace antslam::frontend {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "frontend/fragmenter.hpp"
-#include "frontend/pose_covariance.hpp"
+#include "antslam/frontend/fragmenter.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
 
 namespace antslam::frontend {
 namespace {

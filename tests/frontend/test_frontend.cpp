@@ -3,10 +3,10 @@
 
 #include <vector>
 
-#include "frontend/frontend.hpp"
-#include "frontend/map_render.hpp"
-#include "frontend/report.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/frontend.hpp"
+#include "antslam/frontend/map_render.hpp"
+#include "antslam/frontend/report.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

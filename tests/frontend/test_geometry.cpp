@@ -5,11 +5,11 @@
 #include <numbers>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "frontend/pose_covariance.hpp"
-#include "frontend/scan_points.hpp"
-#include "frontend/uncertainty_graph.hpp"
-#include "slamgraph/gaussian2.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/frontend/pose_covariance.hpp"
+#include "antslam/frontend/scan_points.hpp"
+#include "antslam/frontend/uncertainty_graph.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
 
 namespace antslam::frontend {
 namespace {

@@ -6,11 +6,11 @@
 #include <limits>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "frontend/branch_and_bound.hpp"
-#include "frontend/correlative_search.hpp"
-#include "frontend/distance_field.hpp"
-#include "frontend/likelihood_pyramid.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/frontend/branch_and_bound.hpp"
+#include "antslam/frontend/correlative_search.hpp"
+#include "antslam/frontend/distance_field.hpp"
+#include "antslam/frontend/likelihood_pyramid.hpp"
 
 namespace antslam::frontend {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "frontend/laser_log.hpp"
+#include "antslam/frontend/laser_log.hpp"
 
 namespace antslam::frontend {
 namespace {

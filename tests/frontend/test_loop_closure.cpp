@@ -4,10 +4,10 @@
 #include <cmath>
 #include <vector>
 
-#include "frontend/frontend.hpp"
-#include "frontend/loop_closure.hpp"
-#include "frontend/scan_matcher.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/frontend.hpp"
+#include "antslam/frontend/loop_closure.hpp"
+#include "antslam/frontend/scan_matcher.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

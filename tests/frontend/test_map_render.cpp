@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "frontend/image.hpp"
-#include "frontend/map_render.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/image.hpp"
+#include "antslam/frontend/map_render.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

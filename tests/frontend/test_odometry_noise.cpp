@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "frontend/odometry_benchmark.hpp"
-#include "frontend/odometry_noise.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/odometry_benchmark.hpp"
+#include "antslam/frontend/odometry_noise.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "frontend/odometry_prior.hpp"
-#include "frontend/scan_matcher.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/odometry_prior.hpp"
+#include "antslam/frontend/scan_matcher.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <vector>
 
-#include "frontend/nees.hpp"
-#include "frontend/scan_matcher.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/nees.hpp"
+#include "antslam/frontend/scan_matcher.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

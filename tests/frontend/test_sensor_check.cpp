@@ -7,9 +7,9 @@
 #include <sstream>
 #include <string>
 
-#include "frontend/laser_log.hpp"
-#include "frontend/sensor_check.hpp"
-#include "frontend/simulator.hpp"
+#include "antslam/frontend/laser_log.hpp"
+#include "antslam/frontend/sensor_check.hpp"
+#include "antslam/frontend/simulator.hpp"
 
 namespace antslam::frontend {
 namespace {

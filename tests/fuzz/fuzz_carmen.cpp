@@ -6,8 +6,8 @@
 #include <exception>
 #include <sstream>
 
-#include "frontend/carmen_writer.hpp"
-#include "frontend/laser_log.hpp"
+#include "antslam/frontend/carmen_writer.hpp"
+#include "antslam/frontend/laser_log.hpp"
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

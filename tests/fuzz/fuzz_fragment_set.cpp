@@ -3,8 +3,8 @@
 
 #include <sstream>
 
+#include "antslam/slamgraph/fragment_set_io.hpp"
 #include "fuzz_support.hpp"
-#include "slamgraph/fragment_set_io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace antslam;

@@ -5,8 +5,8 @@
 
 #include <sstream>
 
+#include "antslam/slamgraph/g2o.hpp"
 #include "fuzz_support.hpp"
-#include "slamgraph/g2o.hpp"
 
 namespace {
 

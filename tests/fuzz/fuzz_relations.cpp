@@ -4,9 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "eval/relations.hpp"
+#include "antslam/eval/relations.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 #include "fuzz_support.hpp"
-#include "slamgraph/trajectory.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace antslam;

@@ -3,8 +3,8 @@
 
 #include <sstream>
 
+#include "antslam/tsp/tsplib.hpp"
 #include "fuzz_support.hpp"
-#include "tsp/tsplib.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace antslam;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "antslam/slamgraph/trajectory.hpp"
 #include "fuzz_support.hpp"
-#include "slamgraph/trajectory.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace antslam;

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "mapping/close_loops.hpp"
-#include "slamgraph/synth.hpp"
+#include "antslam/mapping/close_loops.hpp"
+#include "antslam/slamgraph/synth.hpp"
 
 namespace antslam::mapping {
 

@@ -7,9 +7,9 @@
 #include <numbers>
 #include <vector>
 
-#include "frontend/frontend.hpp"
-#include "frontend/simulator.hpp"
-#include "mapping/optimize_map.hpp"
+#include "antslam/frontend/frontend.hpp"
+#include "antslam/frontend/simulator.hpp"
+#include "antslam/mapping/optimize_map.hpp"
 
 namespace antslam::mapping {
 namespace {

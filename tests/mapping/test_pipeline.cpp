@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "frontend/frontend.hpp"
-#include "frontend/simulator.hpp"
-#include "mapping/pipeline.hpp"
-#include "mapping/report.hpp"
+#include "antslam/frontend/frontend.hpp"
+#include "antslam/frontend/simulator.hpp"
+#include "antslam/mapping/pipeline.hpp"
+#include "antslam/mapping/report.hpp"
 
 namespace antslam::mapping {
 namespace {

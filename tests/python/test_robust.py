@@ -8,7 +8,7 @@ import antslam
 from conftest import DATA, SOURCE
 
 RING = DATA / "posegraphs" / "ring.g2o"
-BAD = SOURCE / "tests" / "experiments" / "robust"
+BAD = SOURCE / "tests" / "app" / "robust"
 
 
 @pytest.fixture(scope="module")

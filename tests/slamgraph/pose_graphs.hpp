@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "aco/random.hpp"
-#include "slamgraph/g2o.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/slamgraph/g2o.hpp"
 #include "support.hpp"
 
 namespace antslam::slam::testing {

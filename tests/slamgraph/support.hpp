@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/random.hpp"
-#include "slamgraph/fragment_set.hpp"
-#include "slamgraph/fragment_set_io.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/slamgraph/fragment_set.hpp"
+#include "antslam/slamgraph/fragment_set_io.hpp"
 
 namespace antslam::slam::testing {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "slamgraph/alignment_objective.hpp"
+#include "antslam/slamgraph/alignment_objective.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "slamgraph/ceres_baseline.hpp"
-#include "slamgraph/synth.hpp"
+#include "antslam/slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/synth.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

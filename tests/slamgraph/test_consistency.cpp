@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "aco/backend_kind.hpp"
+#include "antslam/aco/backend_kind.hpp"
+#include "antslam/slamgraph/chain.hpp"
+#include "antslam/slamgraph/chi_square.hpp"
+#include "antslam/slamgraph/consistency.hpp"
 #include "pose_graphs.hpp"
-#include "slamgraph/chain.hpp"
-#include "slamgraph/chi_square.hpp"
-#include "slamgraph/consistency.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

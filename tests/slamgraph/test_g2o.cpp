@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "slamgraph/g2o.hpp"
-#include "slamgraph/slam_problem.hpp"
+#include "antslam/slamgraph/g2o.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

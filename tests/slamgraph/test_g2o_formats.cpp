@@ -6,8 +6,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "slamgraph/g2o.hpp"
-#include "slamgraph/graph_structure.hpp"
+#include "antslam/slamgraph/g2o.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "slamgraph/fragment_set.hpp"
-#include "slamgraph/gaussian2.hpp"
-#include "slamgraph/pose2.hpp"
+#include "antslam/slamgraph/fragment_set.hpp"
+#include "antslam/slamgraph/gaussian2.hpp"
+#include "antslam/slamgraph/pose2.hpp"
 
 namespace antslam::slam {
 namespace {

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "slamgraph/graph_objective.hpp"
-#include "slamgraph/graph_optimize.hpp"
-#include "slamgraph/graph_structure.hpp"
+#include "antslam/slamgraph/graph_objective.hpp"
+#include "antslam/slamgraph/graph_optimize.hpp"
+#include "antslam/slamgraph/graph_structure.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

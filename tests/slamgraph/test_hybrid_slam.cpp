@@ -7,12 +7,12 @@
 
 #include <limits>
 
-#include "aco/colony.hpp"
-#include "aco/rules.hpp"
-#include "aco/update_hybrid.hpp"
-#include "aco/variants.hpp"
-#include "slamgraph/slam_problem.hpp"
-#include "slamgraph/synth.hpp"
+#include "antslam/aco/colony.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/aco/update_hybrid.hpp"
+#include "antslam/aco/variants.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
+#include "antslam/slamgraph/synth.hpp"
 
 namespace antslam::slam {
 namespace {

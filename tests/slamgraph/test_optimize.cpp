@@ -4,10 +4,10 @@
 
 #include <stop_token>
 
-#include "slamgraph/optimize.hpp"
-#include "slamgraph/search_baselines.hpp"
-#include "slamgraph/synth.hpp"
-#include "slamgraph/trials.hpp"
+#include "antslam/slamgraph/optimize.hpp"
+#include "antslam/slamgraph/search_baselines.hpp"
+#include "antslam/slamgraph/synth.hpp"
+#include "antslam/slamgraph/trials.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -9,8 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include "antslam/slamgraph/outliers.hpp"
 #include "pose_graphs.hpp"
-#include "slamgraph/outliers.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "slamgraph/refine.hpp"
-#include "slamgraph/synth.hpp"
+#include "antslam/slamgraph/refine.hpp"
+#include "antslam/slamgraph/synth.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <string>
 
-#include "slamgraph/result_io.hpp"
-#include "slamgraph/synth.hpp"
+#include "antslam/slamgraph/result_io.hpp"
+#include "antslam/slamgraph/synth.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -9,11 +9,11 @@
 #include <limits>
 #include <utility>
 
+#include "antslam/slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/consistency.hpp"
+#include "antslam/slamgraph/outliers.hpp"
+#include "antslam/slamgraph/robust.hpp"
 #include "pose_graphs.hpp"
-#include "slamgraph/ceres_baseline.hpp"
-#include "slamgraph/consistency.hpp"
-#include "slamgraph/outliers.hpp"
-#include "slamgraph/robust.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

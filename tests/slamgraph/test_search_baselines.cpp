@@ -4,9 +4,9 @@
 
 #include <limits>
 
-#include "aco/variants.hpp"
-#include "slamgraph/search_baselines.hpp"
-#include "slamgraph/slam_problem.hpp"
+#include "antslam/aco/variants.hpp"
+#include "antslam/slamgraph/search_baselines.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -7,8 +7,8 @@
 
 #include <Eigen/LU>
 
-#include "aco/problem.hpp"
-#include "slamgraph/slam_problem.hpp"
+#include "antslam/aco/problem.hpp"
+#include "antslam/slamgraph/slam_problem.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

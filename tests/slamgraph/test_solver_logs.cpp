@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "slamgraph/ceres_baseline.hpp"
+#include "antslam/slamgraph/ceres_baseline.hpp"
 
 namespace antslam::slam {
 namespace {

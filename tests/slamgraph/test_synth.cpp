@@ -6,8 +6,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "slamgraph/fragment_set_io.hpp"
-#include "slamgraph/synth.hpp"
+#include "antslam/slamgraph/fragment_set_io.hpp"
+#include "antslam/slamgraph/synth.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "slamgraph/trajectory.hpp"
+#include "antslam/slamgraph/trajectory.hpp"
 
 namespace antslam::slam {
 namespace {

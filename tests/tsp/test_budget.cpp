@@ -12,8 +12,8 @@
 #include <span>
 #include <vector>
 
-#include "aco/variants.hpp"
-#include "tsp/solver.hpp"
+#include "antslam/aco/variants.hpp"
+#include "antslam/tsp/solver.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tsp/distance.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/distance.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "tsp/experiment.hpp"
+#include "antslam/tsp/experiment.hpp"
 
 namespace antslam::tsp {
 namespace {

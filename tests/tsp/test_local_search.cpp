@@ -8,8 +8,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "tsp/local_search.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/local_search.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

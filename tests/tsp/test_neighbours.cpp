@@ -5,11 +5,11 @@
 
 #include <algorithm>
 
-#include "aco/permutation_family.hpp"
-#include "aco/rules.hpp"
-#include "tsp/neighbours.hpp"
-#include "tsp/problem.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/aco/permutation_family.hpp"
+#include "antslam/aco/rules.hpp"
+#include "antslam/tsp/neighbours.hpp"
+#include "antslam/tsp/problem.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

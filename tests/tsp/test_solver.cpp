@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tsp/solver.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/solver.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

@@ -4,8 +4,8 @@
 
 #include <sstream>
 
-#include "tsp/optima.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/optima.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

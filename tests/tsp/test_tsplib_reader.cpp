@@ -6,8 +6,8 @@
 
 #include <sstream>
 
-#include "tsp/generator.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/generator.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

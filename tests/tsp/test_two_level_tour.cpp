@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "tsp/two_level_tour.hpp"
+#include "antslam/tsp/two_level_tour.hpp"
 #include "tsp_test_support.hpp"
 
 namespace antslam::tsp {

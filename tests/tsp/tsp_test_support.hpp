@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "../aco/test_problems.hpp"
-#include "aco/random.hpp"
-#include "tsp/instance.hpp"
+#include "antslam/aco/random.hpp"
+#include "antslam/tsp/instance.hpp"
 
 namespace antslam::tsp::testing {
 

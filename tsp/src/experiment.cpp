@@ -1,4 +1,4 @@
-#include "tsp/experiment.hpp"
+#include "antslam/tsp/experiment.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "aco/backend_kind.hpp"
-#include "tsp/optima.hpp"
-#include "tsp/tsplib.hpp"
+#include "antslam/aco/backend_kind.hpp"
+#include "antslam/tsp/optima.hpp"
+#include "antslam/tsp/tsplib.hpp"
 
 namespace antslam::tsp {
 

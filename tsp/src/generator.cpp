@@ -1,4 +1,4 @@
-#include "tsp/generator.hpp"
+#include "antslam/tsp/generator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/random.hpp"
+#include "antslam/aco/random.hpp"
 
 namespace antslam::tsp {
 

@@ -1,4 +1,4 @@
-#include "tsp/instance.hpp"
+#include "antslam/tsp/instance.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tsp/local_search.hpp"
+#include "antslam/tsp/local_search.hpp"
 
 #include <stdexcept>
 

@@ -11,9 +11,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "tsp/array_tour.hpp"
-#include "tsp/problem.hpp"
-#include "tsp/two_level_tour.hpp"
+#include "antslam/tsp/array_tour.hpp"
+#include "antslam/tsp/problem.hpp"
+#include "antslam/tsp/two_level_tour.hpp"
 
 namespace antslam::tsp::detail {
 

@@ -1,4 +1,4 @@
-#include "tsp/nearest_unvisited.hpp"
+#include "antslam/tsp/nearest_unvisited.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "tsp/neighbours.hpp"
+#include "antslam/tsp/neighbours.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "tsp/optima.hpp"
+#include "antslam/tsp/optima.hpp"
 
 #include <fstream>
 #include <stdexcept>

@@ -1,10 +1,10 @@
-#include "tsp/problem.hpp"
+#include "antslam/tsp/problem.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
-#include "tsp/neighbours.hpp"
+#include "antslam/tsp/neighbours.hpp"
 
 namespace antslam::tsp {
 

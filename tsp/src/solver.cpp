@@ -1,7 +1,7 @@
-#include "tsp/solver.hpp"
+#include "antslam/tsp/solver.hpp"
 
-#include "aco/backend_factory.hpp"
-#include "aco/permutation_family.hpp"
+#include "antslam/aco/backend_factory.hpp"
+#include "antslam/aco/permutation_family.hpp"
 
 namespace antslam::tsp {
 

@@ -1,4 +1,4 @@
-#include "tsp/spatial_grid.hpp"
+#include "antslam/tsp/spatial_grid.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsplib_lexer.hpp"
 
 namespace antslam::tsp {

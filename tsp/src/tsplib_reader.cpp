@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/tsplib.hpp"
 #include "tsplib_lexer.hpp"
 
 namespace antslam::tsp {

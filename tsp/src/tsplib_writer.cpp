@@ -3,7 +3,7 @@
 #include <charconv>
 #include <ostream>
 
-#include "tsp/tsplib.hpp"
+#include "antslam/tsp/tsplib.hpp"
 
 namespace antslam::tsp {
 

@@ -1,4 +1,4 @@
-#include "tsp/two_level_tour.hpp"
+#include "antslam/tsp/two_level_tour.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,16 +1,16 @@
 // Uses every installed library once; exits 0 if each gives the value computed here by hand.
-#include <aco/synthetic_layered.hpp>
-#include <aco/variants.hpp>
-#include <baselines/tinyslam.hpp>
-#include <clique/exact.hpp>
+#include <antslam/aco/synthetic_layered.hpp>
+#include <antslam/aco/variants.hpp>
+#include <antslam/baselines/tinyslam.hpp>
+#include <antslam/clique/exact.hpp>
+#include <antslam/eval/statistics.hpp>
+#include <antslam/frontend/frontend.hpp>
+#include <antslam/mapping/optimize_map.hpp>
+#include <antslam/slamgraph/synth.hpp>
+#include <antslam/tsp/generator.hpp>
+#include <antslam/tsp/problem.hpp>
+#include <antslam/tsp/solver.hpp>
 #include <cstdio>
-#include <eval/statistics.hpp>
-#include <frontend/frontend.hpp>
-#include <mapping/optimize_map.hpp>
-#include <slamgraph/synth.hpp>
-#include <tsp/generator.hpp>
-#include <tsp/problem.hpp>
-#include <tsp/solver.hpp>
 #include <vector>
 
 int main() {

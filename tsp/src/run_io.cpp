@@ -1,0 +1,64 @@
+#include "antslam/tsp/run_io.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+#include "antslam/aco/backend_kind.hpp"
+#include "antslam/aco/variant.hpp"
+
+namespace antslam::tsp {
+
+void write_trace_csv(std::ostream& out, std::span<const aco::IterationReport> trace) {
+  out << "iteration,elapsed_s,iteration_best,global_best\n" << std::setprecision(15);
+  for (const aco::IterationReport& r : trace)
+    out << r.iteration << ',' << r.elapsed_s << ',' << r.iteration_best << ',' << r.global_best
+        << '\n';
+}
+
+void write_run_json(std::ostream& out, const TspProblem& problem, const SolverSettings& settings,
+                    const aco::RunResult& result, double length, std::optional<double> optimum,
+                    double setup_s, const std::optional<aco::IslandSettings>& islands,
+                    const std::optional<aco::IslandResult>& island) {
+  const Instance& instance = problem.instance();
+  nlohmann::json j = {{"instance", instance.name()},
+                      {"cities", instance.size()},
+                      {"edge_weight_type", to_string(instance.type())},
+                      {"variant", aco::to_string(settings.aco.variant)},
+                      {"ants", result.settings.colony.ants},
+                      {"rho", result.settings.rho},
+                      {"local_search", to_string(settings.local_search.kind)},
+                      {"neighbours", problem.neighbours(0).size()},
+                      {"candidates", problem.candidates(0).size()},
+                      {"focused_edges", result.settings.colony.focused.min_new_edges},
+                      {"seed", settings.aco.seed},
+                      {"threads", result.settings.threads},
+                      {"backend", aco::to_string(result.settings.backend)},
+                      {"best_length", length},
+                      {"iterations", result.iterations},
+                      {"best_iteration", result.best_iteration},
+                      {"elapsed_s", result.elapsed_s},
+                      {"setup_s", setup_s},
+                      {"time_to_best_s", result.time_to_best_s},
+                      {"stop_reason", aco::to_string(result.reason)}};
+  if (islands && island) {
+    j["colonies"] = islands->colonies;
+    j["exchange_every"] = islands->exchange_every;
+    j["topology"] = aco::to_string(islands->topology);
+    j["best_colony"] = island->best_colony;
+    j["colony_best_lengths"] = island->colony_best;
+    j["exchanges"] = island->exchanges;
+    j["exchange_s"] = island->exchange_s;
+  }
+  if (optimum) {
+    j["optimum"] = *optimum;
+    j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
+  }
+  if (!std::isfinite(length)) throw std::logic_error("tsp run JSON: the best length is not finite");
+  out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+}
+
+}  // namespace antslam::tsp
