@@ -179,6 +179,12 @@ void add_robust_command(CLI::App& app) {
                   "those they share, and the test at that noise (0 = never, 1e9 = always)")
       ->check(finite_in(0.0, 1e9))
       ->capture_default_str();
+  cmd->add_option("--prune-from", o->s.prune_from,
+                  "pcm-*: from this many closures the clique search sees only those the pruning "
+                  "leaves (a greedy clique's size bounds the degree; closures that agree with all "
+                  "others are kept without search)")
+      ->check(count_in(0, kMaxProofNodes))
+      ->capture_default_str();
   cmd->add_option("--variant", o->variant, "pcm-aco: ACO variant")
       ->check(CLI::IsMember(aco::variant_names()))
       ->capture_default_str();

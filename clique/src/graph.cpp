@@ -52,6 +52,7 @@ Graph::Graph(std::size_t vertices, std::span<const Edge> edges, std::vector<doub
     detail::set_bit({bits_.data() + std::size_t{j} * words_, words_}, i);
   }
   offset_.assign(n_ + 1, 0);
+  neighbour_.reserve(2 * edges.size());  // exact unless edges repeat
   for (std::uint32_t v = 0; v < n_; ++v) {
     detail::for_each_bit(row(v), [&](std::uint32_t u) { neighbour_.push_back(u); });
     offset_[v + 1] = neighbour_.size();

@@ -23,6 +23,9 @@ def apply(target, table, options, function):
         try:
             setattr(owner, attribute, value)
         except TypeError:
+            if isinstance(value, int) and not isinstance(value, bool) and value < 0:
+                raise ValueError(f"{function}(): {name}={value} must be a whole number >= 0") \
+                    from None
             raise TypeError(f"{function}(): {name}={value!r} has the wrong type") from None
 
 

@@ -2,9 +2,11 @@
 
 #include <pybind11/pybind11.h>
 
+#include <exception>
 #include <stdexcept>
 #include <string>
 
+#include "antslam/io/errors.hpp"
 #include "antslam/version.hpp"
 #include "bindings.hpp"
 
@@ -21,10 +23,43 @@ aco::BackendKind backend_from(const std::string& name) {
   return *kind;
 }
 
+namespace {
+
+/// The library's exceptions as pybind11 maps them (ValueError, IndexError, OverflowError,
+/// RuntimeError), but with the antslam program's one-line message: a message quoting bytes of a
+/// file that are not UTF-8 would otherwise be lost (Python raised RuntimeError('')).
+void translate_library_errors(std::exception_ptr error) {
+  const auto raise = [](PyObject* type, const std::exception& e) {
+    PyErr_SetString(type, io::one_line(e.what()).c_str());
+  };
+  try {
+    if (error) std::rethrow_exception(error);
+  } catch (const py::builtin_exception& e) {
+    e.set_error();  // pybind11's own (value_error, type_error, ...), unchanged
+  } catch (const std::invalid_argument& e) {
+    raise(PyExc_ValueError, e);
+  } catch (const std::domain_error& e) {
+    raise(PyExc_ValueError, e);
+  } catch (const std::length_error& e) {
+    raise(PyExc_ValueError, e);
+  } catch (const std::out_of_range& e) {
+    raise(PyExc_IndexError, e);
+  } catch (const std::range_error& e) {
+    raise(PyExc_ValueError, e);
+  } catch (const std::overflow_error& e) {
+    raise(PyExc_OverflowError, e);
+  } catch (const std::runtime_error& e) {
+    raise(PyExc_RuntimeError, e);
+  }
+}
+
+}  // namespace
+
 }  // namespace antslam::python
 
 PYBIND11_MODULE(_core, m) {
   using namespace antslam::python;
+  py::register_exception_translator(translate_library_errors);
   m.doc() = "antslam: ant colony optimization for SLAM map optimization and the TSP";
   m.attr("__version__") = antslam::kVersion;
   py::module_ aco = m.def_submodule("aco", "The colony engine: parameters and layered problems");

@@ -93,6 +93,7 @@ void bind_robust(py::module_& m) {
       .def_readwrite("check_clique", &slam::RobustSettings::check_clique)
       .def_readwrite("check_phi", &slam::RobustSettings::check_phi)
       .def_readwrite("recalibrate_below", &slam::RobustSettings::recalibrate_below)
+      .def_readwrite("prune_from", &slam::RobustSettings::prune_from)
       .def_property(
           "exact_time_limit_s", [](const slam::RobustSettings& s) { return s.exact.time_limit_s; },
           [](slam::RobustSettings& s, double seconds) { s.exact.time_limit_s = seconds; })

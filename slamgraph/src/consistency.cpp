@@ -143,8 +143,13 @@ ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& 
       }
     });
   });
-  for (const auto& block : found)
+  std::size_t total = 0;
+  for (const auto& block : found) total += block.size();
+  result.pairs.reserve(total);
+  for (auto& block : found) {
     result.pairs.insert(result.pairs.end(), block.begin(), block.end());
+    block = {};  // its memory back before the next block is copied
+  }
   return result;
 }
 

@@ -19,14 +19,12 @@ void validate(const OptimizeSettings& s) {
   };
   require(s.iterations > 0 || s.time_limit_s > 0.0, "set iterations or a time limit");
   require(s.time_limit_s >= 0.0, "time limit must be >= 0");
-  const aco::Parameters& p = s.aco;
-  require(p.rho >= 0.0 && p.rho <= 1.0, "rho must be in (0, 1] (0: the variant's default)");
-  require(p.p0 >= 0.0 && p.p0 <= 1.0, "p0 must be in [0, 1]");
-  require(p.q0 >= 0.0 && p.q0 <= 1.0, "q0 must be in [0, 1]");
-  require(p.alpha >= 0.0 && std::isfinite(p.alpha), "alpha must be finite and >= 0");
-  require(p.glob_best_freq >= 1, "globBestFreq must be >= 1");
-  require(p.tau_init > 0.0 && p.tau_max >= p.tau_init, "need 0 < tau_init <= tau_max");
-  require(p.ants <= kMaxAnts, "ants must be <= 100000 (0: the variant's default)");
+  try {
+    aco::validate(s.aco);  // the engine's parameters, checked where the engine defines them
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("optimize: ") + e.what());
+  }
+  require(s.aco.ants <= kMaxAnts, "ants must be <= 100000 (0: the variant's default)");
   require(s.ceres.max_iterations > 0, "ceres iterations must be positive");
   validate(s.refine);
   require(!s.islands || aco_variant(s.method).has_value(), "colonies need an ACO method");

@@ -24,6 +24,7 @@ ordered_json settings_json(const RobustSettings& s) {
           {"check_clique", s.check_clique},
           {"check_phi", s.check_phi},
           {"recalibrate_below", s.recalibrate_below},
+          {"prune_from", s.prune_from},
           {"gnc_mu_factor", s.gnc.mu_factor},
           {"exact_time_limit_s", s.exact.time_limit_s},
           {"aco_variant", aco::to_string(s.aco.parameters.variant)},
@@ -70,6 +71,7 @@ void write_robust_result(std::ostream& out, const PoseGraph& graph, const Robust
                    {"upper_bound", r.clique->clique.upper_bound},
                    {"optimal", r.clique->clique.optimal},
                    {"consistent_pairs", r.clique->consistent_pairs},
+                   {"searched", r.clique->searched},
                    {"work", r.clique->work}};
   }
   if (r.check_phi) j["check"] = {{"dcs_phi", *r.check_phi}};

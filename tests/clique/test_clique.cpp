@@ -14,6 +14,7 @@
 #include "antslam/clique/greedy.hpp"
 #include "antslam/clique/local_search.hpp"
 #include "antslam/clique/problem.hpp"
+#include "antslam/clique/reduction.hpp"
 #include "clique_support.hpp"
 
 namespace antslam::clique {
@@ -189,6 +190,85 @@ TEST_P(SmallRandomGraph, ProofNodesProveTheAntsCliqueOrFindTheMaximum) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, SmallRandomGraph, ::testing::Range(1, 25));
+
+// Dense graphs with a planted clique, as consistency graphs whose closures mostly agree: the
+// search on the residual finds the maximum, and every maximum clique holds the universal vertices.
+TEST_P(SmallRandomGraph, ReducedSearchEqualsEnumeration) {
+  const auto seed = static_cast<std::uint64_t>(GetParam());
+  const Graph g = random_graph(16, 0.3 + 0.04 * (GetParam() % 16), seed + 200, 1, {1, 4, 6, 9, 12});
+  const double optimum = brute_force_maximum(g);
+  const CliqueReduction reduction = reduce_for_maximum_clique(g);
+  EXPECT_TRUE(is_clique(g, reduction.greedy));
+  const CliqueResult r = maximum_clique_reduced(
+      g, reduction, [](const Graph& residual) { return maximum_clique_exact(residual).clique; });
+  EXPECT_TRUE(is_clique(g, r.vertices));
+  EXPECT_EQ(r.weight, optimum);
+  EXPECT_TRUE(r.optimal);
+  EXPECT_EQ(r.upper_bound, optimum);
+  // Every maximum clique (by enumeration) holds every universal vertex.
+  for (std::uint32_t mask = 1; mask < (1U << g.size()); ++mask) {
+    std::vector<std::uint32_t> subset;
+    for (std::uint32_t v = 0; v < g.size(); ++v)
+      if ((mask >> v) & 1U) subset.push_back(v);
+    if (static_cast<double>(subset.size()) != optimum || !is_clique(g, subset)) continue;
+    for (const std::uint32_t u : reduction.universal)
+      EXPECT_TRUE(std::binary_search(subset.begin(), subset.end(), u)) << u;
+  }
+}
+
+TEST(Reduction, KeepsTheUniversalVerticesAndSearchesTheRest) {
+  // K5 without the edge 0-1: 2, 3 and 4 are in every maximum clique, 0 or 1 completes it.
+  std::vector<Edge> edges;
+  for (std::uint32_t i = 0; i < 5; ++i)
+    for (std::uint32_t j = i + 1; j < 5; ++j)
+      if (!(i == 0 && j == 1)) edges.emplace_back(i, j);
+  const Graph g(5, edges);
+  const CliqueReduction reduction = reduce_for_maximum_clique(g);
+  EXPECT_EQ(reduction.greedy, (std::vector<std::uint32_t>{0, 2, 3, 4}));
+  EXPECT_EQ(reduction.universal, (std::vector<std::uint32_t>{2, 3, 4}));
+  EXPECT_EQ(reduction.residual, (std::vector<std::uint32_t>{0, 1}));
+  std::size_t searched = 0;
+  const CliqueResult r = maximum_clique_reduced(g, reduction, [&](const Graph& residual) {
+    searched = residual.size();
+    EXPECT_EQ(residual.edge_count(), 0U);  // 0 and 1 are not adjacent
+    return maximum_clique_exact(residual).clique;
+  });
+  EXPECT_EQ(searched, 2U);
+  EXPECT_EQ(r.vertices, (std::vector<std::uint32_t>{0, 2, 3, 4}));
+  EXPECT_TRUE(r.optimal);
+}
+
+TEST(Reduction, RemovesWhatCannotBeInALargerCliqueAndNeedsNoSearchThen) {
+  // K4 on 0..3 and vertex 4 adjacent to 0 only: 4 has degree 1 < 4 - 1 and goes; the rest is
+  // complete, so the maximum needs no search.
+  std::vector<Edge> edges{{0, 4}};
+  for (std::uint32_t i = 0; i < 4; ++i)
+    for (std::uint32_t j = i + 1; j < 4; ++j) edges.emplace_back(i, j);
+  const Graph g(5, edges);
+  const CliqueReduction reduction = reduce_for_maximum_clique(g);
+  EXPECT_EQ(reduction.universal, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_TRUE(reduction.residual.empty());
+  bool searched = false;
+  const CliqueResult r = maximum_clique_reduced(g, reduction, [&](const Graph& residual) {
+    searched = true;
+    return maximum_clique_exact(residual).clique;
+  });
+  EXPECT_FALSE(searched);
+  EXPECT_EQ(r.vertices, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(r.upper_bound, 4.0);
+  EXPECT_TRUE(r.optimal);
+}
+
+TEST(Reduction, RefusesWeightsAndBadVertexLists) {
+  const Graph weighted(2, std::vector<Edge>{{0, 1}}, {1.0, 2.0});
+  EXPECT_THROW(reduce_for_maximum_clique(weighted), std::invalid_argument);
+  const Graph g(3, std::vector<Edge>{{0, 1}});
+  const std::vector<std::uint32_t> unsorted{1, 0}, outside{0, 3};
+  EXPECT_THROW(induced_subgraph(g, unsorted), std::invalid_argument);
+  EXPECT_THROW(induced_subgraph(g, outside), std::invalid_argument);
+  const std::vector<std::uint32_t> both{0, 1};
+  EXPECT_EQ(induced_subgraph(g, both).edge_count(), 1U);
+}
 
 TEST(Exact, StopsAtTheTimeLimitWithAValidClique) {
   const Graph g = random_graph(400, 0.9, 3);  // far beyond a millisecond of branch and bound

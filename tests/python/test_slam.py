@@ -86,7 +86,7 @@ def test_observer_initial_and_progress(small):
 def test_errors_are_one_line(small, tmp_path):
     with pytest.raises(ValueError, match=r"^unknown method 'hybird' \(expected one of as, "):
         antslam.slam.optimize(small, method="hybird")
-    with pytest.raises(ValueError, match=r"^optimize: rho must be in \(0, 1\]"):
+    with pytest.raises(ValueError, match=r"^optimize: aco: rho must be in \[0, 1\]"):
         antslam.slam.optimize(small, rho=3)
     with pytest.raises(ValueError, match=r"^optimize: initial has 2 alignments, expected 4$"):
         antslam.slam.optimize(small, method="nlopt", initial=np.zeros((2, 3)))

@@ -119,14 +119,25 @@ def test_errors_are_one_line():
         antslam.tsp.solve(instance, iterations=0)
     with pytest.raises(TypeError, match=r"^solve\(\) got an unexpected keyword argument 'rhoo'$"):
         antslam.tsp.solve(instance, rhoo=0.1)
-    with pytest.raises(TypeError, match=r"^solve\(\): ants=-1 has the wrong type$"):
+    with pytest.raises(ValueError, match=r"^solve\(\): ants=-1 must be a whole number >= 0$"):
         antslam.tsp.solve(instance, ants=-1)
+    with pytest.raises(TypeError, match=r"^solve\(\): ants='many' has the wrong type$"):
+        antslam.tsp.solve(instance, ants="many")
     with pytest.raises(ValueError, match=r"^tour: expected a permutation of 0..13$"):
         instance.tour_length([0] * 14)
     with pytest.raises(RuntimeError, match=r"nan_coordinate\.tsp:\d+: "):
         antslam.tsp.read(FIXTURES / "nan_coordinate.tsp")
     with pytest.raises(RuntimeError, match=r"missing\.tsp"):
         antslam.tsp.read(FIXTURES / "missing.tsp")
+
+
+def test_a_binary_file_is_one_line_naming_it(tmp_path):
+    binary = tmp_path / "binary.tsp"
+    binary.write_bytes(b"NAME: \xff\xfe\x00\x81\nTYPE: TSP\n\x89PNG\r\n")
+    with pytest.raises(RuntimeError) as error:
+        antslam.tsp.read(binary)
+    message = str(error.value)
+    assert message.startswith(str(binary)) and "\\x" in message and "\n" not in message
 
 
 def test_generate_and_save_round_trip(tmp_path):

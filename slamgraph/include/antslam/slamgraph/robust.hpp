@@ -99,6 +99,10 @@ struct RobustSettings {
                                     ///< below this: a graph stating its noise over 2.8 times as
                                     ///< wide (standard deviation) as it shows; 0: never,
                                     ///< infinity: always
+  std::size_t prune_from = 4000;    ///< pcm-*: closures (count) from which the clique search
+                                    ///< sees only what the pruning leaves (clique/reduction.hpp);
+                                    ///< below, the whole graph (the same clique as before the
+                                    ///< pruning existed; it may pick another of equal size)
   GncSettings gnc;                  ///< graduated non-convexity
   clique::ExactSettings exact;      ///< pcm-exact: branch and bound (60 s budget)
   clique::AcoSearchSettings aco;    ///< pcm-aco: variant, ants, termination (backend: below)
@@ -112,6 +116,7 @@ struct CliqueReport {
   std::size_t consistent_pairs = 0;  ///< edges of the consistency graph
   clique::CliqueResult clique;       ///< the trusted closures (indices into split.closures)
   std::uint64_t work = 0;            ///< branch-and-bound nodes (exact) or colony iterations
+  std::size_t searched = 0;          ///< closures the search saw, after the pruning
 };
 
 struct RobustResult {

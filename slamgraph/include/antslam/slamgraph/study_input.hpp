@@ -18,10 +18,10 @@
 namespace antslam::slam {
 
 struct StudyInput {
-  std::string source;                  ///< the file it was read from (named in messages)
-  std::optional<FragmentSet> set;      ///< a fragment set ...
-  std::optional<PoseGraph> graph;      ///< ... or a pose graph
-  std::vector<Pose2> reference;        ///< per fragment or vertex; empty if none
+  std::string source;              ///< the file it was read from (named in messages)
+  std::optional<FragmentSet> set;  ///< a fragment set ...
+  std::optional<PoseGraph> graph;  ///< ... or a pose graph
+  std::vector<Pose2> reference;    ///< per fragment or vertex; empty if none
 
   /// Fragments or vertices.
   std::size_t poses() const;
