@@ -29,4 +29,7 @@ void bind_clique(py::module_& clique);       ///< clique_bindings.cpp: maximum c
 /// The backend of that name (auto, serial, omp, tbb); unknown_name otherwise.
 aco::BackendKind backend_from(const std::string& name);
 
+/// A number as a repr shows it: up to 6 significant digits ("426", "0.0709", "1.5e+07").
+std::string number_text(double value);
+
 }  // namespace antslam::python

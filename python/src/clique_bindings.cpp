@@ -62,7 +62,12 @@ void bind_clique(py::module_& m) {
       .def_readonly("weight", &clique::CliqueResult::weight)
       .def_readonly("upper_bound", &clique::CliqueResult::upper_bound)
       .def_readonly("optimal", &clique::CliqueResult::optimal)
-      .def_readonly("elapsed_s", &clique::CliqueResult::elapsed_s);
+      .def_readonly("elapsed_s", &clique::CliqueResult::elapsed_s)
+      .def("__repr__", [](const clique::CliqueResult& c) {
+        return "<antslam.clique.Clique of " + std::to_string(c.vertices.size()) +
+               " vertices: weight " + number_text(c.weight) + ", upper bound " +
+               number_text(c.upper_bound) + (c.optimal ? ", proven maximum>" : ">");
+      });
 
   py::class_<clique::AcoSearchSettings>(m, "AcoSettings", "clique/aco_search.hpp")
       .def(py::init<>())

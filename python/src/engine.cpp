@@ -95,7 +95,15 @@ void bind_engine(py::module_& m) {
       .def_property_readonly(
           "backend",
           [](const aco::RunResult& r) { return std::string(aco::to_string(r.settings.backend)); })
-      .def_property_readonly("threads", [](const aco::RunResult& r) { return r.settings.threads; });
+      .def_property_readonly("threads", [](const aco::RunResult& r) { return r.settings.threads; })
+      .def("__repr__", [](const aco::RunResult& r) {
+        const std::string variant =
+            r.settings.variant ? std::string(aco::to_string(*r.settings.variant)) + ": " : "";
+        return "<antslam.aco.Run " + variant + "cost " + number_text(r.best.cost) + " after " +
+               std::to_string(r.iterations) + " iterations (" +
+               std::string(aco::to_string(r.reason)) + "), best at iteration " +
+               std::to_string(r.best_iteration) + ", " + number_text(r.elapsed_s) + " s>";
+      });
 }
 
 }  // namespace antslam::python

@@ -84,7 +84,12 @@ void bind_eval(py::module_& m) {
       .def_readonly("relations", &eval::Evaluation::relations)
       .def(
           "to_json", [](const eval::Evaluation& e) { return eval::to_json(e).dump(2); },
-          "The JSON antslam eval --json writes (without the file names)");
+          "The JSON antslam eval --json writes (without the file names)")
+      .def("__repr__", [](const eval::Evaluation& e) {
+        return "<antslam.eval.Evaluation of " + std::to_string(e.associated) +
+               " associated poses: ATE " + number_text(e.ate.translation_m.rmse) + " m rmse, " +
+               number_text(e.ate.translation_m.max) + " m max>";
+      });
   py::class_<slam::TrajectoryError>(m, "FramesError", "ATE of index-matched poses")
       .def_readonly("rmse_m", &slam::TrajectoryError::rmse_m)
       .def_readonly("max_m", &slam::TrajectoryError::max_m)

@@ -195,7 +195,16 @@ void bind_result(py::module_& m) {
           [](const PipelineRun& p) {
             return mapping::report_json(p.log, p.settings, p.result).dump(2);
           },
-          "The JSON report antslam map writes");
+          "The JSON report antslam map writes")
+      .def("__repr__", [](const PipelineRun& p) {
+        const slam::FragmentSet& set = p.result.frontend.fragment_set;
+        return "<antslam.mapping.PipelineResult of " + p.log + ": " +
+               std::to_string(p.result.log.scans.size()) + " scans, " +
+               std::to_string(set.fragments.size()) + " fragments, " +
+               std::to_string(set.closures.size()) + " loop closures, " +
+               std::to_string(p.result.mapping.trials.size()) + " trials, weight " +
+               number_text(p.result.mapping.scores.weight) + ">";
+      });
 }
 
 }  // namespace

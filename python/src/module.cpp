@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 
 #include <exception>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -21,6 +23,12 @@ aco::BackendKind backend_from(const std::string& name) {
   const auto kind = aco::parse_backend(name);
   if (!kind) unknown_name("backend", name, aco::backend_names());
   return *kind;
+}
+
+std::string number_text(double value) {
+  std::ostringstream out;
+  out << std::setprecision(6) << value;
+  return out.str();
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -130,6 +131,15 @@ void bind_robust(py::module_& m) {
       .def_property_readonly("clique_s", [](const RobustRun& r) { return r.result.clique_s; })
       .def_property_readonly("optimize_s", [](const RobustRun& r) { return r.result.optimize_s; })
       .def_property_readonly("total_s", [](const RobustRun& r) { return r.result.total_s; })
+      .def("__repr__",
+           [](const RobustRun& r) {
+             const auto accepted =
+                 std::count(r.result.accepted.begin(), r.result.accepted.end(), true);
+             return "<antslam.slam.RobustResult " + std::string(slam::to_string(r.result.method)) +
+                    ": " + std::to_string(accepted) + " of " +
+                    std::to_string(r.result.accepted.size()) + " loop closures accepted, " +
+                    number_text(r.result.total_s) + " s>";
+           })
       .def(
           "kept_graph",
           [](const RobustRun& r, const NamedGraph& g) {

@@ -193,7 +193,12 @@ void bind_results(py::module_& m) {
       .def_readonly("chi2", &slam::StudyResult::chi2)
       .def_readonly("elapsed_s", &slam::StudyResult::elapsed_s)
       .def_readonly("best_trial", &slam::StudyResult::best_trial)
-      .def_readonly("trials", &slam::StudyResult::trials);
+      .def_readonly("trials", &slam::StudyResult::trials)
+      .def("__repr__", [](const slam::StudyResult& r) {
+        return "<antslam.slam.Summary of " + std::to_string(r.trials) + " trials: weight " +
+               number_text(r.weight.mean) + " +- " + number_text(r.weight.std) + " (best " +
+               number_text(r.weight.min) + ", trial " + std::to_string(r.best_trial) + ")>";
+      });
   m.def(
       "summarize",
       [](const std::string& name, const slam::OptimizeSettings& settings,

@@ -32,6 +32,7 @@ def test_the_module_example():
     found = antslam.clique.aco(g, seed=2)
     best = antslam.clique.exact(g)
     assert found.weight == 3.0 and best.optimal
+    assert repr(best) == "<antslam.clique.Clique of 3 vertices: weight 3, upper bound 3, proven maximum>"
     np.testing.assert_array_equal(found.vertices, [0, 1, 2])
     assert found.stop_reason == "target"  # the colouring bound 3 is reached: proven
 

@@ -21,6 +21,7 @@ def test_a_shifted_copy_has_the_shift_as_ate_without_alignment_and_none_with_it(
     e = antslam.eval.evaluate(estimate, reference, align=False)
     assert e.associated == 20
     assert e.ate.translation_m.rmse == pytest.approx(1.0, abs=1e-12)
+    assert repr(e) == "<antslam.eval.Evaluation of 20 associated poses: ATE 1 m rmse, 1 m max>"
     assert e.rpe.translation_m.max == pytest.approx(0.0, abs=1e-12)  # relative motion unchanged
     e = antslam.eval.evaluate(estimate, reference)
     assert e.ate.translation_m.rmse == pytest.approx(0.0, abs=1e-9)

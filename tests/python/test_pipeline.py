@@ -26,6 +26,8 @@ def test_the_pipeline_closes_the_loop(run):
     assert r.scans == 225 and len(r.fragment_set) == 16
     assert r.trajectory.shape == (225, 4) and r.scan_matcher_trajectory.shape == (225, 4)
     assert len(r.trials) == 2 and r.best_trial in (0, 1)
+    assert repr(r).startswith(f"<antslam.mapping.PipelineResult of {LOG}: 225 scans, 16 fragments, ")
+    assert " loop closures, 2 trials, weight " in repr(r)
     assert r.trials[r.best_trial].weight < r.scan_matcher_scores[0]
     assert all(c["after_sigmas"] <= 2.0 for c in r.closures)
     assert r.maps is None and r.evaluation is None

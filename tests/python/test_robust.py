@@ -37,6 +37,7 @@ def test_pcm_keeps_every_true_closure_and_no_false_one(spoiled, method):
     kept = {tuple(c) for c in r.closures[r.accepted].tolist()}
     assert len(kept) == 26 and not kept & false_pairs
     assert r.clique.weight == 26 and r.consistent_pairs > 0
+    assert repr(r).startswith(f"<antslam.slam.RobustResult {method}: 26 of 46 loop closures accepted, ")
 
 
 def test_the_recalibrated_check_reports_its_factor_and_core(spoiled):
