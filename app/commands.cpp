@@ -9,7 +9,8 @@ namespace antslam::cli {
 
 namespace {
 
-/// One example command line per command, on the data the project ships (shown under its help).
+/// One example command line per command, on the data the project ships, run from the
+/// repository (shown under its help, unwrapped: at most 98 characters).
 const std::pair<const char*, const char*> kExamples[] = {
     {"map",
      "antslam map data/laser/malaga-oneloop.clf --laser-offset 0.78 --out-dir results/malaga"},
@@ -17,22 +18,19 @@ const std::pair<const char*, const char*> kExamples[] = {
      "antslam frontend data/laser/malaga-oneloop.clf --laser-offset 0.78 --out-dir results/fe"},
     {"fragment-set", "antslam fragment-set data/laser/malaga-oneloop.clf -o results/malaga.json"},
     {"optimize",
-     "antslam optimize data/fragment-sets/paper15.json --method hybrid+nlopt --trials 20 "
-     "-o results/paper15"},
+     "antslam optimize data/fragment-sets/paper15.json --method hybrid+nlopt --trials 20 -o p15"},
     {"synth", "antslam synth --preset paper15 -o results/paper15.json"},
     {"g2o", "antslam g2o data/posegraphs/ring.g2o -o results/ring.json"},
-    {"outliers",
-     "antslam outliers data/posegraphs/ring.g2o --count 100 --kind random -o results/ring100.g2o"},
+    {"outliers", "antslam outliers data/posegraphs/ring.g2o --count 100 --kind random -o r100.g2o"},
     {"robust",
-     "antslam robust results/ring100.g2o --method pcm-aco --reference data/posegraphs/ring.gt.g2o "
-     "-o results/ring100-pcm"},
+     "antslam robust r100.g2o --method pcm-aco --reference data/posegraphs/ring.gt.g2o -o r100"},
     {"eval",
      "antslam eval results/malaga/trajectory.tum results/malaga/trajectory-scan-matcher.tum"},
     {"tsp",
      "antslam tsp --instance data/tsplib/kroA100.tsp --time 10 --tour-out results/kroA100.tour"},
     {"tsp-experiment",
-     "antslam tsp-experiment --data-dir data/tsplib --instances eil51,kroA100 --variants mmas,acs "
-     "--seeds 3 --csv results/runs.csv"},
+     "antslam tsp-experiment --data-dir data/tsplib --instances eil51,kroA100 --time 1 --csv "
+     "runs.csv"},
     {"tsp-generate", "antslam tsp-generate --cities 1000 --seed 1 -o results/random1000.tsp"},
     {"odometry", "antslam odometry data/laser/mit-csail.clf -o results/mit-odometry.tum"},
     {"simulate-odometry",

@@ -70,7 +70,7 @@ std::string WrappingFormatter::make_description(const CLI::App* app) const {
 }
 
 std::string WrappingFormatter::make_footer(const CLI::App* app) const {
-  return wrap_words(CLI::Formatter::make_footer(app), kHelpWidth);
+  return CLI::Formatter::make_footer(app);  // example command lines, never broken
 }
 
 std::string WrappingFormatter::make_subcommand(const CLI::App* sub) const {

@@ -16,7 +16,8 @@ inline constexpr std::size_t kHelpWidth = 100;  ///< columns of a help line, at 
 /// (existing line breaks kept; a word longer than `width` stands on its own line).
 std::string wrap_words(std::string_view text, std::size_t width);
 
-/// CLI11's formatter, with option, command and program descriptions wrapped to kHelpWidth.
+/// CLI11's formatter, with option, command and program descriptions wrapped to kHelpWidth (the
+/// footer, an example command line, is shown as it is).
 class WrappingFormatter : public CLI::Formatter {
  public:
   WrappingFormatter();
