@@ -69,10 +69,6 @@ std::string WrappingFormatter::make_description(const CLI::App* app) const {
   return wrap_words(CLI::Formatter::make_description(app), kHelpWidth);
 }
 
-std::string WrappingFormatter::make_footer(const CLI::App* app) const {
-  return CLI::Formatter::make_footer(app);  // example command lines, never broken
-}
-
 std::string WrappingFormatter::make_subcommand(const CLI::App* sub) const {
   std::stringstream out;
   CLI::detail::format_help(out, sub->get_display_name(true),

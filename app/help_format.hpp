@@ -23,7 +23,6 @@ class WrappingFormatter : public CLI::Formatter {
   WrappingFormatter();
   std::string make_option_desc(const CLI::Option* option) const override;
   std::string make_description(const CLI::App* app) const override;
-  std::string make_footer(const CLI::App* app) const override;
   std::string make_subcommand(const CLI::App* sub) const override;
 };
 

@@ -183,7 +183,7 @@ void add_robust_command(CLI::App& app) {
                   "pcm-*: from this many closures the clique search sees only those the pruning "
                   "leaves (a greedy clique's size bounds the degree; closures that agree with all "
                   "others are kept without search)")
-      ->check(count_in(0, kMaxProofNodes))
+      ->check(non_negative_integer())
       ->capture_default_str();
   cmd->add_option("--variant", o->variant, "pcm-aco: ACO variant")
       ->check(CLI::IsMember(aco::variant_names()))

@@ -19,6 +19,7 @@
 #include "antslam/dist/command_world.hpp"
 #include "antslam/dist/communicator.hpp"
 #include "antslam/dist/island_exchange.hpp"
+#include "antslam/io/json_output.hpp"
 #include "antslam/io/output_files.hpp"
 #include "antslam/io/progress.hpp"
 #include "antslam/tsp/optima.hpp"
@@ -104,10 +105,8 @@ void write_outputs(const TspCommand& c, io::OutputFiles& outputs, const tsp::Tsp
   if (!c.trace_csv.empty())
     outputs.write(c.trace_csv, [&](std::ostream& out) { tsp::write_trace_csv(out, trace); });
   if (!c.json_out.empty())
-    outputs.write(c.json_out, [&](std::ostream& out) {
-      tsp::write_run_json(out, problem, settings, result, length, optimum, setup_s, islands,
-                          island);
-    });
+    outputs.write(c.json_out, io::json_text(tsp::run_json(problem, settings, result, length,
+                                                          optimum, setup_s, islands, island)));
   outputs.commit();
 }
 

@@ -12,7 +12,9 @@ namespace antslam::clique {
 namespace {
 
 /// A clique by taking the vertices in order of decreasing degree (lowest index on ties), each
-/// one adjacent to all taken so far.
+/// one adjacent to all taken so far: one word-wise AND per vertex taken, where greedy_clique
+/// (greedy.hpp) recounts every candidate's neighbours at each step, O(n^2 / 64) a vertex taken
+/// (minutes on the 10,688 closures of city10000).
 std::vector<std::uint32_t> greedy_by_degree(const Graph& graph) {
   std::vector<std::uint32_t> order(graph.size());
   std::iota(order.begin(), order.end(), 0U);

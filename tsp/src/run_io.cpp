@@ -1,11 +1,7 @@
 #include "antslam/tsp/run_io.hpp"
 
-#include <cmath>
 #include <iomanip>
-#include <nlohmann/json.hpp>
 #include <ostream>
-#include <stdexcept>
-#include <string>
 
 #include "antslam/aco/backend_kind.hpp"
 #include "antslam/aco/variant.hpp"
@@ -19,10 +15,10 @@ void write_trace_csv(std::ostream& out, std::span<const aco::IterationReport> tr
         << '\n';
 }
 
-void write_run_json(std::ostream& out, const TspProblem& problem, const SolverSettings& settings,
-                    const aco::RunResult& result, double length, std::optional<double> optimum,
-                    double setup_s, const std::optional<aco::IslandSettings>& islands,
-                    const std::optional<aco::IslandResult>& island) {
+nlohmann::json run_json(const TspProblem& problem, const SolverSettings& settings,
+                        const aco::RunResult& result, double length, std::optional<double> optimum,
+                        double setup_s, const std::optional<aco::IslandSettings>& islands,
+                        const std::optional<aco::IslandResult>& island) {
   const Instance& instance = problem.instance();
   nlohmann::json j = {{"instance", instance.name()},
                       {"cities", instance.size()},
@@ -57,8 +53,7 @@ void write_run_json(std::ostream& out, const TspProblem& problem, const SolverSe
     j["optimum"] = *optimum;
     j["excess_percent"] = 100.0 * (length / *optimum - 1.0);
   }
-  if (!std::isfinite(length)) throw std::logic_error("tsp run JSON: the best length is not finite");
-  out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+  return j;
 }
 
 }  // namespace antslam::tsp
