@@ -42,6 +42,7 @@ struct RobustOptions {
   std::string variant = "mmas";
   std::string backend = "auto";
   bool no_clique_check = false;
+  bool shown_noise = false;
   slam::RobustSettings s;
 };
 
@@ -65,6 +66,7 @@ void run(RobustOptions o) {
   o.s.aco.parameters.variant = *aco::parse_variant(o.variant);             // time, both
   o.s.backend = parse_backend_option(o.backend);
   o.s.check_clique = !o.no_clique_check;
+  o.s.shown_noise = o.shown_noise;
   aco::resolve(o.s.backend, o.s.threads);  // serial on more than one thread fails here, up front
   io::OutputFiles outputs;
   const std::filesystem::path graph_out = outputs.add(o.output + ".g2o");
@@ -165,6 +167,9 @@ void add_robust_command(CLI::App& app) {
                   "pcm-exact: branch-and-bound budget, s (0 = none)")
       ->check(finite_in(0.0, 1e9))
       ->capture_default_str();
+  cmd->add_flag("--shown-noise", o->shown_noise,
+                "pcm-*: decide at the noise the graph's short cycles show (x-y and heading "
+                "scales of the stated covariances), every test at a family-wise confidence");
   cmd->add_flag("--no-clique-check", o->no_clique_check,
                 "pcm-*: accept the clique as it is, without its joint check (the published PCM)");
   cmd->add_option("--check-phi", o->s.check_phi,

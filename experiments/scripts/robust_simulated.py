@@ -11,13 +11,16 @@ summary per setting) and, for several --stated scales, robust-simulated.png (fal
 kept, recall and RMSE against the stated scale, one line per setting and size).
 
     PYTHONPATH=build/python /usr/bin/python3 experiments/scripts/robust_simulated.py
-        [--poses 1000 3500] [--stated 1 6] [--odometry-stated S]
+        [--poses 1000 3500] [--stated 1 6] [--stated-theta 0.167 6] [--sigma-theta 0.05]
+        [--odometry-stated S]
         [--kinds random random-group local-group]
         [--graphs 2] [--settings recalibrate_below=0 recalibrate_below=1e9] [--threads 2]
         [--out results/robust-simulated] [--publish] [--quick]
 
 --quick: 1,000 poses, the noise stated 6 times wider, random false closures, one graph.
---count: false closures per graph (1,000).
+--count: false closures per graph (1,000; 0: the clean graphs). --stated-theta: the heading's
+stated scale, every pair with every --stated (default: as x-y). --sigma-theta: the real heading
+noise per step and closure (0.01 rad; 0.05-0.3: heavy rotation noise, as m3500b).
 --antslam is not used (the back ends run in this process).
 """
 import math
@@ -77,16 +80,16 @@ def run_cell(p, args, graph, kind, seed, settings):
 
 
 def cell_table(args, rows, names):
-    """Means per size, stated noise and kind, the settings' values side by side."""
+    """Means per size, stated noise (x-y, heading) and kind, the settings' values side by side."""
     lines = []
     for poses in args.poses:
-        for stated in args.stated:
+        for stated, theta in sorted({(r[1], r[2]) for r in rows}):
             for kind in args.kinds:
-                cell = [r for r in rows if r[:3] == [poses, stated, kind]]
-                lines.append([poses, f"x{stated:g}", kind] + [
-                    " / ".join(f"{np.mean([r[i] for r in cell if r[4] == n]):.{d}f}"
-                               for n in names) for i, d in ((5, 1), (6, 3), (7, 3), (8, 1))])
-    return markdown_table(["poses", "stated noise", "false closures",
+                cell = [r for r in rows if r[:4] == [poses, stated, theta, kind]]
+                lines.append([poses, f"x{stated:g}, x{theta:g}", kind] + [
+                    " / ".join(f"{np.mean([r[i] for r in cell if r[5] == n]):.{d}f}"
+                               for n in names) for i, d in ((6, 1), (7, 3), (8, 3), (9, 1))])
+    return markdown_table(["poses", "stated noise (x-y, heading)", "false closures",
                            "false kept (" + " / ".join(names) + ")", "recall", "RMSE m",
                            "time s"], lines)
 
@@ -96,15 +99,15 @@ def summary_table(rows, names):
     (+5 mm) the best setting's on the same graph."""
     best = {}
     for r in rows:
-        best[tuple(r[:4])] = min(best.get(tuple(r[:4]), math.inf), r[7])
+        best[tuple(r[:5])] = min(best.get(tuple(r[:5]), math.inf), r[8])
     lines = []
     for n in names:
-        mine = [r for r in rows if r[4] == n]
-        lines.append([n, sum(r[5] for r in mine), f"{np.mean([r[6] for r in mine]):.3f}",
-                      f"{min(r[6] for r in mine):.3f}", f"{np.mean([r[7] for r in mine]):.3f}",
-                      f"{max(r[7] for r in mine):.3f}",
-                      sum(r[7] <= 1.05 * best[tuple(r[:4])] + 0.005 for r in mine), len(mine),
-                      f"{sum(r[8] for r in mine):.1f}"])
+        mine = [r for r in rows if r[5] == n]
+        lines.append([n, sum(r[6] for r in mine), f"{np.mean([r[7] for r in mine]):.3f}",
+                      f"{min(r[7] for r in mine):.3f}", f"{np.mean([r[8] for r in mine]):.3f}",
+                      f"{max(r[8] for r in mine):.3f}",
+                      sum(r[8] <= 1.05 * best[tuple(r[:5])] + 0.005 for r in mine), len(mine),
+                      f"{sum(r[9] for r in mine):.1f}"])
     return markdown_table(["setting", "false kept, all runs", "recall mean", "recall min",
                            "RMSE mean m", "RMSE max m", "runs within 1.05x (+5 mm) of the best",
                            "runs", "time s, all runs"], lines)
@@ -114,13 +117,13 @@ def stated_figure(args, rows, names):
     """Means over kinds and graphs against the stated noise scale: one panel per measure, one
     line per setting and size (the sizes solid and dashed)."""
     fig, axes = plt.subplots(1, 3, figsize=(13, 4))
-    measures = ((5, "false closures kept (of 1,000)"), (6, "recall"),
-                (7, "position RMSE to the outlier-free map, m"))
+    measures = ((6, "false closures kept (of 1,000)"), (7, "recall"),
+                (8, "position RMSE to the outlier-free map, m"))
     for ax, (i, label) in zip(axes, measures):
         for colour, n in enumerate(names):
             for style, poses in zip(("-", "--"), args.poses):
                 ax.plot(args.stated, [np.mean([r[i] for r in rows if r[0] == poses and
-                                               r[1] == stated and r[4] == n])
+                                               r[1] == stated and r[5] == n])
                                       for stated in args.stated], style, marker="o",
                         color=f"C{colour}", label=f"{n}, {poses} poses")
         ax.set_xscale("log")
@@ -139,6 +142,10 @@ def main():
     p.add_argument("--poses", type=int, nargs="+", choices=[1000, 3500], default=[1000, 3500])
     p.add_argument("--stated", type=float, nargs="+", default=[1.0, 6.0],
                    help="stated noise / real noise (standard deviations)")
+    p.add_argument("--stated-theta", type=float, nargs="+",
+                   help="stated heading noise / real heading noise (default: as --stated)")
+    p.add_argument("--sigma-theta", type=float, default=0.01,
+                   help="real heading noise of a step and a closure, rad (0.05-0.3: heavy)")
     p.add_argument("--odometry-stated", type=float,
                    help="the odometry's stated noise / real noise (default: as --stated)")
     p.add_argument("--kinds", nargs="+", default=["random", "random-group", "local-group"],
@@ -152,8 +159,10 @@ def main():
     args = p.parse_args()
     if args.quick:
         args.poses, args.stated, args.kinds = [1000], [6.0], ["random"]
-    if not all(s > 0 for s in args.stated):
-        p.error("--stated: scales must be > 0")
+    if not all(s > 0 for s in args.stated + (args.stated_theta or [])):
+        p.error("--stated, --stated-theta: scales must be > 0")
+    if not args.sigma_theta > 0:
+        p.error("--sigma-theta: must be > 0")
     if args.odometry_stated is not None and not args.odometry_stated > 0:
         p.error("--odometry-stated: the scale must be > 0")
     try:
@@ -163,17 +172,22 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for poses in args.poses:
-        for stated in args.stated:
+        for stated, stated_theta in [(s, t) for s in args.stated
+                                     for t in (args.stated_theta or [s])]:
             for kind in args.kinds:
                 for seed in range(1, args.graphs + 1):
                     g = manhattan_graph(antslam, poses, 100 + seed, world=WORLD_SIDE[poses],
-                                        stated_scale=stated,
+                                        stated_scale=stated, stated_theta_scale=stated_theta,
+                                        sigma_theta=args.sigma_theta,
                                         odometry_stated_scale=args.odometry_stated)
                     cell = run_cell(p, args, g, kind, seed, settings)
-                    rows += [[poses, stated, kind, seed] + r for r in cell]
-                    progress(f"{poses} poses, stated x{stated:g}, {kind} #{seed}: " + "; ".join(
-                        f"{r[0]} {r[1]} false, recall {r[2]:.3f}, {r[3]:.3f} m" for r in cell))
-    save_csv(args, "robust-simulated", ["poses", "stated", "kind", "graph", "setting",
+                    rows += [[poses, stated, stated_theta, kind, seed] + r for r in cell]
+                    progress(f"{poses} poses, stated x{stated:g} (heading x{stated_theta:g}), "
+                             f"{kind} #{seed}: " + "; ".join(
+                                 f"{r[0]} {r[1]} false, recall {r[2]:.3f}, {r[3]:.3f} m"
+                                 for r in cell))
+    save_csv(args, "robust-simulated", ["poses", "stated", "stated_theta", "kind", "graph",
+                                        "setting",
                                         "false_kept", "recall", "rmse_m", "time_s",
                                         "variance_factor"], rows)
     names = [text for text, _ in settings]

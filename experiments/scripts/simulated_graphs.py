@@ -30,12 +30,14 @@ def _between(a, b):
 
 
 def manhattan_g2o(poses, seed, world=30, turn=0.3, closure=0.5, min_gap=10, sigma_xy=0.05,
-                  sigma_theta=0.01, stated_scale=6.0, odometry_stated_scale=None):
+                  sigma_theta=0.01, stated_scale=6.0, odometry_stated_scale=None,
+                  stated_theta_scale=None):
     """g2o text of a simulated Manhattan graph with `poses` poses in a world of world x world
     crossings: at each crossing the robot turns with probability `turn` (and always at the
     border), and a pose at a crossing it visited at least `min_gap` poses earlier closes a loop
     to one of those visits with probability `closure`. The odometry states its noise
-    `odometry_stated_scale` times wider than it is (default: stated_scale, as the closures)."""
+    `odometry_stated_scale` times wider than it is (default: stated_scale, as the closures); the
+    heading of every edge `stated_theta_scale` times (default: as x and y)."""
     rng = np.random.default_rng(seed)
     truth = [(0.0, 0.0, 0.0)]
     heading = 0
@@ -66,8 +68,10 @@ def manhattan_g2o(poses, seed, world=30, turn=0.3, closure=0.5, min_gap=10, sigm
             i = int(rng.choice(earlier))
             edges.append((i, j, measured(i, j)))
         visits.setdefault(key, []).append(j)
+    theta_factor = 1.0 if stated_theta_scale is None else stated_theta_scale / stated_scale
+
     def information(scale):
-        return 1.0 / (scale * sigma_xy) ** 2, 1.0 / (scale * sigma_theta) ** 2
+        return 1.0 / (scale * sigma_xy) ** 2, 1.0 / (scale * theta_factor * sigma_theta) ** 2
 
     closure_info = information(stated_scale)
     odometry_info = information(stated_scale if odometry_stated_scale is None

@@ -38,8 +38,8 @@ std::vector<slam::Pose2> solve_trusted(const slam::FragmentSet& set,
 /// PCM: the maximum clique of the pairwise consistency graph.
 Closing consistent_set(const slam::FragmentSet& set, const ClosingSettings& settings) {
   const slam::RobustSettings& pcm = settings.pcm;
-  const slam::ConsistencyGraph consistency =
-      slam::pairwise_consistency(set, {pcm.inlier_confidence, pcm.backend, pcm.threads});
+  const slam::ConsistencyGraph consistency = slam::pairwise_consistency(
+      set, {.confidence = pcm.inlier_confidence, .backend = pcm.backend, .threads = pcm.threads});
   const slam::RobustMethod method = settings.selection == ClosureSelection::pcm_exact
                                         ? slam::RobustMethod::pcm_exact
                                         : slam::RobustMethod::pcm_aco;

@@ -158,7 +158,7 @@ _OUTLIERS = {"group_size": "group_size", "local_window": "local_window"}
 _ROBUST = dict(
     {name: "aco.parameters." + attribute for name, attribute in _options.ENGINE.items()},
     confidence="inlier_confidence", cauchy_scale="cauchy_scale", dcs_phi="dcs_phi",
-    check_clique="check_clique", check_phi="check_phi", recalibrate_below="recalibrate_below",
+    shown_noise="shown_noise", check_clique="check_clique", check_phi="check_phi", recalibrate_below="recalibrate_below",
     prune_from="prune_from", exact_time_limit="exact_time_limit_s",
     iterations="aco.termination.max_iterations", plateau_steps="aco.plateau_steps",
     proof_nodes="aco.proof_nodes",
@@ -196,7 +196,8 @@ def consistency(graph, confidence=0.99, *, threads=1, backend="auto"):
 def robust(graph, method="pcm-aco", *, variant=None, seed=1, **options):
     """Decides which loop closures of the graph to trust and optimises it, as `antslam robust`
     does (method: ls, cauchy, dcs, gnc, pcm-exact, pcm-aco; docs/robust-closures.md). Options
-    as the program's: confidence, cauchy_scale, dcs_phi, check_clique (False: the published
+    as the program's: confidence, cauchy_scale, dcs_phi, shown_noise (True: decide at the noise
+    the graph's short cycles show; result.noise_scale), check_clique (False: the published
     PCM), check_phi (the check's DCS Phi in multiples of the clique's median unary distance; 0:
     dcs_phi), recalibrate_below (the recalibrated check runs when the checked graph's variance
     factor is below it; 0: never), prune_from (closures from which the clique search sees only

@@ -91,6 +91,7 @@ void bind_robust(py::module_& m) {
       .def_readwrite("inlier_confidence", &slam::RobustSettings::inlier_confidence)
       .def_readwrite("cauchy_scale", &slam::RobustSettings::cauchy_scale)
       .def_readwrite("dcs_phi", &slam::RobustSettings::dcs_phi)
+      .def_readwrite("shown_noise", &slam::RobustSettings::shown_noise)
       .def_readwrite("check_clique", &slam::RobustSettings::check_clique)
       .def_readwrite("check_phi", &slam::RobustSettings::check_phi)
       .def_readwrite("recalibrate_below", &slam::RobustSettings::recalibrate_below)
@@ -117,6 +118,13 @@ void bind_robust(py::module_& m) {
       .def_property_readonly("clique",
                              [](const RobustRun& r) { return clique_of(r.result.clique); })
       .def_property_readonly("check_phi", [](const RobustRun& r) { return r.result.check_phi; })
+      .def_property_readonly(
+          "noise_scale",
+          [](const RobustRun& r) -> std::optional<std::pair<double, double>> {
+            if (!r.result.shown_noise) return std::nullopt;
+            return std::pair{r.result.shown_noise->scale.xy, r.result.shown_noise->scale.theta};
+          },
+          "shown_noise: the (x-y, heading) scale of the stated deviations the graph shows")
       .def_property_readonly("variance_factor",
                              [](const RobustRun& r) { return r.result.variance_factor; })
       .def_property_readonly("core", [](const RobustRun& r) { return clique_of(r.result.core); })

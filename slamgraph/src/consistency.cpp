@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "antslam/aco/backend_factory.hpp"
 #include "antslam/slamgraph/chi_square.hpp"
@@ -13,27 +15,42 @@ namespace antslam::slam {
 
 namespace {
 
-using Symmetric3 = std::array<double, 6>;
-
-/// The upper triangle (xx xy xt yy yt tt) of Ad(T) Sigma Ad(T)^T.
-Symmetric3 adjoint_covariance(const Pose2& t, const Eigen::Matrix3d& covariance) {
-  const double c = std::cos(t.theta), s = std::sin(t.theta);
+Eigen::Matrix3d adjoint(double x, double y, double c, double s) {
   Eigen::Matrix3d ad;
-  ad << c, -s, t.y, s, c, -t.x, 0.0, 0.0, 1.0;
-  const Eigen::Matrix3d m = ad * covariance * ad.transpose();
-  return {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
+  ad << c, -s, y, s, c, -x, 0.0, 0.0, 1.0;
+  return ad;
 }
 
-/// e^T C^-1 e for the symmetric C = (xx xy xt yy yt tt) by LDL^T; +infinity unless C is
-/// positive definite.
-double mahalanobis_squared(const std::array<double, 3>& e, const Symmetric3& c) {
-  const double d1 = c[0];
+Eigen::Matrix3d adjoint(const Pose2& t) {
+  return adjoint(t.x, t.y, std::cos(t.theta), std::sin(t.theta));
+}
+
+/// The covariance at `scale`: D Sigma D, D = diag(xy, xy, theta).
+Eigen::Matrix3d scaled(Eigen::Matrix3d covariance, NoiseScale scale) {
+  const Eigen::Vector3d d(scale.xy, scale.xy, scale.theta);
+  return d.asDiagonal() * covariance * d.asDiagonal();
+}
+
+/// Log of the SE(2) element (x, y, angle theta with cosine c and sine s): (V(theta)^-1 t, theta).
+Eigen::Vector3d se2_log(double x, double y, double theta, double c, double s) {
+  double a = 1.0 - theta * theta / 6.0, b = 0.5 * theta;  // sin(t)/t, (1 - cos(t))/t near 0
+  if (std::abs(theta) > 1e-4) {
+    a = s / theta;
+    b = (1.0 - c) / theta;
+  }
+  const double n = a * a + b * b;
+  return {(a * x + b * y) / n, (-b * x + a * y) / n, theta};
+}
+
+/// e^T C^-1 e for the symmetric C by LDL^T; +infinity unless C is positive definite.
+double mahalanobis_squared(const Eigen::Vector3d& e, const Eigen::Matrix3d& c) {
+  const double d1 = c(0, 0);
   if (!(d1 > 0.0)) return std::numeric_limits<double>::infinity();
-  const double l21 = c[1] / d1, l31 = c[2] / d1;
-  const double d2 = c[3] - l21 * c[1];
+  const double l21 = c(1, 0) / d1, l31 = c(2, 0) / d1;
+  const double d2 = c(1, 1) - l21 * c(1, 0);
   if (!(d2 > 0.0)) return std::numeric_limits<double>::infinity();
-  const double l32 = (c[4] - l31 * c[1]) / d2;
-  const double d3 = c[5] - l31 * c[2] - l32 * l32 * d2;
+  const double l32 = (c(2, 1) - l31 * c(1, 0)) / d2;
+  const double d3 = c(2, 2) - l31 * c(2, 0) - l32 * l32 * d2;
   if (!(d3 > 0.0)) return std::numeric_limits<double>::infinity();
   const double y1 = e[0], y2 = e[1] - l21 * y1, y3 = e[2] - l31 * y1 - l32 * y2;
   return y1 * y1 / d1 + y2 * y2 / d2 + y3 * y3 / d3;
@@ -41,7 +58,23 @@ double mahalanobis_squared(const std::array<double, 3>& e, const Symmetric3& c) 
 
 }  // namespace
 
-CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split) {
+CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split, NoiseScale scale,
+                     const ConsistencySettings& settings) {
+  const double confidence = settings.confidence;
+  if (!(confidence > 0.0 && confidence < 1.0))
+    throw std::invalid_argument("pairwise consistency: confidence must be in (0, 1), got " +
+                                std::to_string(confidence));
+  if (!(settings.linear_heading_sd > 0.0))
+    throw std::invalid_argument(
+        "pairwise consistency: the linear heading deviation must be "
+        "positive, got " +
+        std::to_string(settings.linear_heading_sd));
+  linear_heading_variance_ = settings.linear_heading_sd * settings.linear_heading_sd;
+  if (!(scale.xy > 0.0 && scale.theta > 0.0 && std::isfinite(scale.xy) &&
+        std::isfinite(scale.theta)))
+    throw std::invalid_argument("pairwise consistency: the noise scale must be positive, got " +
+                                std::to_string(scale.xy) + " and " + std::to_string(scale.theta));
+  heading_only_factor_ = chi_square3_quantile(confidence) / chi_square1_quantile(confidence);
   std::vector<Pose2> pose = chain_poses(graph, split);
   double cx = 0.0, cy = 0.0;
   for (const Pose2& p : pose) {
@@ -54,11 +87,12 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split) {
     p.x -= cx;
     p.y -= cy;
   }
-  prefix_.assign(pose.size(), Symmetric3{});
+  prefix_.assign(pose.size(), Eigen::Matrix3d::Zero());
   for (std::size_t k = 0; k < split.chain.size(); ++k) {
-    const Symmetric3 g =
-        adjoint_covariance(pose[k + 1], oriented(graph.edges[split.chain[k]], k).covariance());
-    for (std::size_t i = 0; i < 6; ++i) prefix_[k + 1][i] = prefix_[k][i] + g[i];
+    const Eigen::Matrix3d ad = adjoint(pose[k + 1]);
+    const Eigen::Matrix3d sigma =
+        scaled(oriented(graph.edges[split.chain[k]], k).covariance(), scale);
+    prefix_[k + 1] = prefix_[k] + ad * sigma * ad.transpose();
   }
   for (const std::size_t e : split.closures) {
     const PoseGraphEdge& edge = graph.edges[e];
@@ -67,54 +101,71 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split) {
     c.hi = std::max(edge.from, edge.to);
     const Gaussian2 z = oriented(edge, c.lo);
     const Pose2 y = pose[c.lo] * z.mean() * pose[c.hi].inverse();
-    const Pose2 y_inverse = y.inverse();
     c.x = y.x;
     c.y = y.y;
     c.theta = y.theta;
     c.c = std::cos(y.theta);
     c.s = std::sin(y.theta);
-    c.ix = y_inverse.x;
-    c.iy = y_inverse.y;
-    c.itheta = y_inverse.theta;
-    c.h = adjoint_covariance(pose[c.hi], z.covariance());
+    const Eigen::Matrix3d ad = adjoint(pose[c.hi]);
+    c.h = ad * scaled(z.covariance(), scale) * ad.transpose();
     closure_.push_back(c);
   }
 }
 
-double CycleTest::squared_distance(std::size_t k, std::size_t l) const {
-  const Closure& a = closure_[k];
-  const Closure& b = closure_[l];
-  // The cycle Y_a Y_b^-1.
-  std::array<double, 3> e{a.x + a.c * b.ix - a.s * b.iy, a.y + a.s * b.ix + a.c * b.iy,
-                          a.theta + b.itheta};
-  if (e[2] >= std::numbers::pi) e[2] -= 2.0 * std::numbers::pi;
-  if (e[2] < -std::numbers::pi) e[2] += 2.0 * std::numbers::pi;
-  // Its covariance: both closures plus the chain steps in exactly one of the two spans.
-  const std::size_t lo = std::max(a.lo, b.lo), hi = std::min(a.hi, b.hi);
-  Symmetric3 c;
-  for (std::size_t i = 0; i < 6; ++i) {
-    c[i] = a.h[i] + b.h[i] + (prefix_[a.hi][i] - prefix_[a.lo][i]) +
-           (prefix_[b.hi][i] - prefix_[b.lo][i]);
-    if (lo < hi) c[i] -= 2.0 * (prefix_[hi][i] - prefix_[lo][i]);
-  }
-  return mahalanobis_squared(e, c);
+Cycle CycleTest::cycle(std::size_t k, std::size_t l) const {
+  const Closure* a = &closure_[k];
+  const Closure* b = &closure_[l];
+  if (b->lo < a->lo) std::swap(a, b);  // the same distance either way (Log(C^-1) = -Log(C))
+  // C = Y_A Y_B^-1: angle theta_A - theta_B, translation t_A - R(C) t_B.
+  const double c = a->c * b->c + a->s * b->s, s = a->s * b->c - a->c * b->s;
+  const double x = a->x - (c * b->x - s * b->y), y = a->y - (s * b->x + c * b->y);
+  const double theta = wrap_angle(a->theta - b->theta);
+  const auto range = [&](std::size_t from, std::size_t to) -> Eigen::Matrix3d {
+    if (from >= to) return Eigen::Matrix3d::Zero();
+    return prefix_[to] - prefix_[from];
+  };
+  const Eigen::Matrix3d ad_c = adjoint(x, y, c, s);
+  const Eigen::Matrix3d ad_a = adjoint(a->x, a->y, a->c, a->s);
+  const Eigen::Matrix3d between = ad_a - ad_c;
+  const std::size_t high_from = std::max(b->lo, std::min(a->hi, b->hi));
+  Cycle result;
+  result.residual = se2_log(x, y, theta, c, s);
+  result.covariance =
+      ad_c * range(a->lo, std::min(b->lo, a->hi)) * ad_c.transpose() +
+      between * range(a->hi, b->lo) * between.transpose() +
+      ad_a * (range(high_from, std::max(a->hi, b->hi)) + a->h + b->h) * ad_a.transpose();
+  return result;
 }
 
-double CycleTest::squared_distance(std::size_t k) const {
+Cycle CycleTest::cycle(std::size_t k) const {
+  // Y = Y^ Exp(Ad(X^_hi) n - xi_hi) with the chain anchored at lo: the covariance transported by
+  // Ad(Y), which leaves the distance of Log(Y) unchanged (Ad(Y) Log(Y) = Log(Y)).
   const Closure& a = closure_[k];
-  Symmetric3 c;
-  for (std::size_t i = 0; i < 6; ++i) c[i] = a.h[i] + prefix_[a.hi][i] - prefix_[a.lo][i];
-  return mahalanobis_squared({a.x, a.y, a.theta}, c);
+  const Eigen::Matrix3d ad = adjoint(a.x, a.y, a.c, a.s);
+  Cycle result;
+  result.residual = se2_log(a.x, a.y, a.theta, a.c, a.s);
+  result.covariance = ad * (prefix_[a.hi] - prefix_[a.lo] + a.h) * ad.transpose();
+  return result;
 }
+
+double CycleTest::distance(const Cycle& cycle) const {
+  const double heading_variance = cycle.covariance(2, 2);
+  if (heading_variance > linear_heading_variance_)
+    return cycle.residual.z() * cycle.residual.z() / heading_variance * heading_only_factor_;
+  return mahalanobis_squared(cycle.residual, cycle.covariance);
+}
+
+double CycleTest::squared_distance(std::size_t k, std::size_t l) const {
+  return distance(cycle(k, l));
+}
+
+double CycleTest::squared_distance(std::size_t k) const { return distance(cycle(k)); }
 
 ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& split,
                                       const ConsistencySettings& settings) {
-  if (!(settings.confidence > 0.0 && settings.confidence < 1.0))
-    throw std::invalid_argument("pairwise consistency: confidence must be in (0, 1), got " +
-                                std::to_string(settings.confidence));
+  const CycleTest test(graph, split, {}, settings);
   ConsistencyGraph result;
   result.threshold = chi_square3_quantile(settings.confidence);
-  const CycleTest test(graph, split);
   const std::size_t m = test.closures();
   result.closures = m;
   // Blocks of consecutive rows with about equal numbers of pairs; each block fills its own list,

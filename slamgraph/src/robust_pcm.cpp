@@ -11,10 +11,16 @@
 
 #include "antslam/clique/graph.hpp"
 #include "antslam/clique/reduction.hpp"
+#include "antslam/slamgraph/chi_square.hpp"
 #include "antslam/slamgraph/consistency.hpp"
+#include "antslam/slamgraph/shown_noise.hpp"
 #include "robust_detail.hpp"
 
 namespace antslam::slam {
+
+double pairwise_confidence(double confidence, std::size_t closures) {
+  return 1.0 - (1.0 - confidence) / static_cast<double>(std::max<std::size_t>(closures, 2) - 1);
+}
 
 CliqueReport maximum_consistent_set(const ConsistencyGraph& consistency, RobustMethod method,
                                     const RobustSettings& settings) {
@@ -40,7 +46,7 @@ CliqueReport maximum_consistent_set(const ConsistencyGraph& consistency, RobustM
   // Below settings.prune_from closures the whole graph is searched: it takes seconds at most, and
   // the search then returns the clique it returned before the pruning existed (with the pruning
   // it may return another maximum clique of the same size, which moved 45 of 238 runs of the
-  // published pcm-aco grid by one or two accepted closures; docs/robust-closures.md).
+  // published pcm-aco grid by one or two accepted closures; docs/notes/robust-closures-log.md).
   if (closures.size() < settings.prune_from) {
     report.searched = closures.size();
     report.clique = search(closures);
@@ -103,13 +109,12 @@ std::vector<EdgeLoss> keep_only(const std::vector<bool>& kept) {
   return loss;
 }
 
-/// The consistency graph of `tested` (the graph, or the graph at another noise) and its maximum
-/// clique by the method of `result`, their times added to result's.
-CliqueReport maximum_clique_of(const PoseGraph& tested, const RobustSettings& settings,
-                               RobustResult& result) {
+/// The consistency graph of `tested` (the graph, or the graph at another noise) by `tests` and
+/// its maximum clique by the method of `result`, their times added to result's.
+CliqueReport maximum_clique_of(const PoseGraph& tested, const ConsistencySettings& tests,
+                               const RobustSettings& settings, RobustResult& result) {
   auto start = std::chrono::steady_clock::now();
-  const ConsistencyGraph consistency = pairwise_consistency(
-      tested, result.split, {settings.inlier_confidence, settings.backend, settings.threads});
+  const ConsistencyGraph consistency = pairwise_consistency(tested, result.split, tests);
   result.consistency_s += seconds_since(start);
   start = std::chrono::steady_clock::now();
   CliqueReport report = maximum_consistent_set(consistency, result.method, settings);
@@ -120,8 +125,9 @@ CliqueReport maximum_clique_of(const PoseGraph& tested, const RobustSettings& se
 /// The median squared distance of the unary cycles (a closure and the odometry between its
 /// ends; CycleTest) of the closures marked in `closures`, none if there are none.
 std::optional<double> median_unary_distance(const PoseGraph& graph, const ChainSplit& split,
+                                            const ConsistencySettings& tests,
                                             const std::vector<bool>& closures) {
-  const CycleTest test(graph, split);
+  const CycleTest test(graph, split, {}, tests);
   std::vector<double> d2;
   for (std::size_t k = 0; k < closures.size(); ++k)
     if (closures[k]) d2.push_back(test.squared_distance(k));
@@ -148,18 +154,20 @@ void accept_after_dcs(const PoseGraph& graph, const std::vector<bool>& candidate
 /// closure stays accepted when its residual passes the chi-square test. Pairwise tests over long
 /// odometry spans have little power, so a clique can hold false closures that agree with every
 /// other one pairwise but not with the map the others make together.
-/// DCS's Phi: settings.dcs_phi, or with check_phi > 0 that many times the clique's median unary
-/// distance (robust.hpp); result.check_phi records it.
+/// DCS's Phi: settings.dcs_phi (at the shown noise: c2, so that a closure within the test keeps
+/// its full weight), or with check_phi > 0 that many times the clique's median unary distance
+/// (robust.hpp); result.check_phi records it.
 void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
-                  const RobustSettings& settings, RobustResult& result) {
+                  const ConsistencySettings& tests, const RobustSettings& settings,
+                  RobustResult& result) {
   RobustSettings start = settings;
   start.ceres.max_iterations = settings.check_start_iterations;
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), start,
            result);
-  result.check_phi = settings.dcs_phi;
+  result.check_phi = settings.shown_noise ? c2 : settings.dcs_phi;
   if (settings.check_phi > 0.0) {
     const std::optional<double> median =
-        median_unary_distance(graph, result.split, result.accepted);
+        median_unary_distance(graph, result.split, tests, result.accepted);
     if (median && *median > 0.0) result.check_phi = settings.check_phi * *median;
   }
   accept_after_dcs(graph, result.accepted, c2, *result.check_phi, settings, result);
@@ -170,9 +178,9 @@ void check_clique(const PoseGraph& graph, const std::vector<Pose2>& initial, dou
 /// is below settings.recalibrate_below the core clique at the noise divided by f, least squares
 /// on the closures of both cliques from the odometry, DCS on the closures of either from there,
 /// and the test at chi2 <= f c2.
-void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
-                        const std::vector<bool>& clique, const RobustSettings& settings,
-                        RobustResult& result) {
+void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initial,
+                        ConsistencySettings tests, double c2, const std::vector<bool>& clique,
+                        const RobustSettings& settings, RobustResult& result) {
   const std::optional<double> f =
       shown_variance_factor(graph, result.split, result.accepted, result.poses, c2);
   if (!f || !(*f > 0.0) || !std::isfinite(*f)) return;
@@ -180,7 +188,8 @@ void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initia
   if (!(*f < settings.recalibrate_below)) return;
   PoseGraph recalibrated = graph;
   for (PoseGraphEdge& e : recalibrated.edges) e.information /= *f;
-  result.core = maximum_clique_of(recalibrated, settings, result);
+  tests.linear_heading_sd *= std::sqrt(*f);  // the same deviation in the recalibrated units
+  result.core = maximum_clique_of(recalibrated, tests, settings, result);
 
   std::vector<bool> both(clique.size(), false), either = clique;
   for (const std::uint32_t k : result.core->clique.vertices) {
@@ -193,18 +202,35 @@ void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initia
 
 }  // namespace
 
-void run_pcm(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
+void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double c2,
              const RobustSettings& settings, RobustResult& result) {
   const std::size_t m = result.split.closures.size();
+  // At the stated noise every test runs at the inlier confidence (c2). At the noise the graph
+  // shows (shown_noise.hpp) the tests are sharp, and a true closure must pass all its m - 1
+  // pairwise tests and the check: each at the family-wise confidence (pairwise_confidence); that
+  // noise also says where a cycle's heading leaves the linear regime (consistency.hpp).
+  const auto start = std::chrono::steady_clock::now();
+  ConsistencySettings tests{.confidence = settings.inlier_confidence,
+                            .backend = settings.backend,
+                            .threads = settings.threads};
+  if (settings.shown_noise) {
+    result.shown_noise = estimate_shown_noise(stated, result.split);
+    tests.confidence = pairwise_confidence(settings.inlier_confidence, m);
+    tests.linear_heading_sd = kLinearHeadingSd;
+    c2 = chi_square3_quantile(tests.confidence);
+  }
+  const PoseGraph graph =
+      result.shown_noise ? at_noise_scale(stated, result.shown_noise->scale) : stated;
+  result.consistency_s += seconds_since(start);
   result.accepted.assign(m, false);
   if (m > 0) {
-    result.clique = maximum_clique_of(graph, settings, result);
+    result.clique = maximum_clique_of(graph, tests, settings, result);
     for (const std::uint32_t k : result.clique->clique.vertices) result.accepted[k] = true;
   }
   const std::vector<bool> clique = result.accepted;
   if (settings.check_clique && m > 0) {
-    check_clique(graph, initial, c2, settings, result);
-    recalibrated_check(graph, initial, c2, clique, settings, result);
+    check_clique(graph, initial, c2, tests, settings, result);
+    recalibrated_check(graph, initial, tests, c2, clique, settings, result);
   }
   // From the odometry again: the check's solve can end in a wrong basin with right decisions.
   optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), settings,

@@ -21,6 +21,7 @@ ordered_json settings_json(const RobustSettings& s) {
   return {{"inlier_confidence", s.inlier_confidence},
           {"cauchy_scale", s.cauchy_scale},
           {"dcs_phi", s.dcs_phi},
+          {"shown_noise", s.shown_noise},
           {"check_clique", s.check_clique},
           {"check_phi", s.check_phi},
           {"recalibrate_below", s.recalibrate_below},
@@ -65,6 +66,12 @@ void write_robust_result(std::ostream& out, const PoseGraph& graph, const Robust
                      {"accepted", sc.accepted_outliers},
                      {"precision", number_or_null(sc.precision)},
                      {"recall", number_or_null(sc.recall)}};
+  }
+  if (r.shown_noise) {
+    j["shown_noise"] = {
+        {"estimated", r.shown_noise->estimated},     {"scale_xy", r.shown_noise->scale.xy},
+        {"scale_theta", r.shown_noise->scale.theta}, {"cycles", r.shown_noise->cycles},
+        {"inliers", r.shown_noise->inliers},         {"rounds", r.shown_noise->rounds}};
   }
   if (r.clique) {
     j["clique"] = {{"size", r.clique->clique.vertices.size()},

@@ -128,3 +128,13 @@ def test_the_consistency_graph_keeps_its_invariants(spoiled):
     assert lone and not any(k in pair for pair in edges for k in lone)
     with pytest.raises(ValueError, match="confidence"):
         antslam.slam.consistency(graph, confidence=1.5)
+
+
+def test_robust_reports_the_noise_the_graph_shows():
+    graph = antslam.slam.read_graph(RING)
+    stated = antslam.slam.robust(graph, "pcm-aco")
+    shown = antslam.slam.robust(graph, "pcm-aco", shown_noise=True)
+    assert stated.noise_scale is None
+    xy, theta = shown.noise_scale
+    assert 0 < xy < 1 and 0 < theta < 1  # ring states its noise wider than it shows
+    assert antslam.slam.robust(graph, "gnc").noise_scale is None

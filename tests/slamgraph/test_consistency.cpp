@@ -81,33 +81,26 @@ TEST(Consistency, HandComputedCyclesOnAStraightChain) {
   EXPECT_NEAR(test.squared_distance(3), 0.0, 1e-12);
 }
 
-/// The cycle a1 -z1-> b1 -odometry-> b2 -z2^-1-> a2 -odometry-> a1 composed from the
-/// measurements, its covariance from the numerical Jacobian with respect to every measurement
-/// it uses (right perturbations z * d; a step the cycle passes twice, once each way, is one
-/// measurement), and its squared Mahalanobis distance.
-double brute_force_cycle(const PoseGraph& g, const ChainSplit& split, std::size_t k,
-                         std::size_t l) {
-  struct Use {
-    std::size_t edge;  // index into g.edges
-    std::size_t from;  // the vertex the measurement is oriented from
-    bool inverse;
-  };
-  std::vector<Use> uses;
-  const auto span = [&](std::size_t c) {
-    const PoseGraphEdge& e = g.edges[split.closures[c]];
-    return std::pair{std::min(e.from, e.to), std::max(e.from, e.to)};
-  };
-  const auto odometry = [&](std::size_t from, std::size_t to) {
-    if (from < to)
-      for (std::size_t s = from; s < to; ++s) uses.push_back({split.chain[s], s, false});
-    for (std::size_t s = from; s-- > to;) uses.push_back({split.chain[s], s, true});
-  };
-  const auto [a1, b1] = span(k);
-  const auto [a2, b2] = span(l);
-  uses.push_back({split.closures[k], a1, false});
-  odometry(b1, b2);
-  uses.push_back({split.closures[l], a2, true});
-  odometry(a2, a1);
+/// Log of an SE(2) element: (V(theta)^-1 t, theta), V = [sin t / t, -(1 - cos t) / t; ...].
+Eigen::Vector3d se2_log(const Pose2& p) {
+  const double t = p.theta;
+  Eigen::Matrix2d v = Eigen::Matrix2d::Identity();
+  if (std::abs(t) > 1e-9)
+    v << std::sin(t) / t, -(1 - std::cos(t)) / t, (1 - std::cos(t)) / t, std::sin(t) / t;
+  const Eigen::Vector2d rho = v.inverse() * p.translation();
+  return {rho.x(), rho.y(), t};
+}
+
+/// A cycle composed from the measurements it uses, in order (each oriented from `from`, or
+/// inverted), its residual Log(C) and the covariance of its left perturbation from the numerical
+/// Jacobian with respect to every measurement (right perturbations z * d; a step the cycle passes
+/// twice, once each way, is one measurement); returns the squared Mahalanobis distance.
+struct Use {
+  std::size_t edge;  // index into g.edges
+  std::size_t from;  // the vertex the measurement is oriented from
+  bool inverse;
+};
+double brute_force_distance(const PoseGraph& g, const std::vector<Use>& uses) {
   std::vector<std::size_t> edges;  // the distinct measurements, one perturbation each
   std::vector<Eigen::Index> slot;  // of each use
   std::vector<Pose2> mean;         // of each use
@@ -123,26 +116,62 @@ double brute_force_cycle(const PoseGraph& g, const ChainSplit& split, std::size_
       const Pose2 z = mean[u] * Pose2::from_vector(d.segment<3>(slot[u]));
       p = p * (uses[u].inverse ? z.inverse() : z);
     }
-    return p.vector();
+    return p;
   };
   const auto dims = static_cast<Eigen::Index>(3 * edges.size());
-  const Eigen::Vector3d e = cycle(Eigen::VectorXd::Zero(dims));
+  const Pose2 at = cycle(Eigen::VectorXd::Zero(dims));
   Eigen::MatrixXd jacobian(3, dims), covariance = Eigen::MatrixXd::Zero(dims, dims);
   for (Eigen::Index i = 0; i < dims; ++i) {
     Eigen::VectorXd d = Eigen::VectorXd::Zero(dims);
     d[i] = 1e-6;
-    const Eigen::Vector3d plus = cycle(d);
+    const Eigen::Vector3d plus = se2_log(cycle(d) * at.inverse());
     d[i] = -1e-6;
-    Eigen::Vector3d diff = plus - cycle(d);
-    diff.z() = wrap_angle(diff.z());
-    jacobian.col(i) = diff / 2e-6;
+    jacobian.col(i) = (plus - se2_log(cycle(d) * at.inverse())) / 2e-6;
   }
   for (std::size_t u = 0; u < uses.size(); ++u)
     covariance.block<3, 3>(slot[u], slot[u]) =
         oriented(g.edges[uses[u].edge], uses[u].from).covariance();
   const Eigen::Matrix3d cycle_covariance = jacobian * covariance * jacobian.transpose();
+  const Eigen::Vector3d e = se2_log(at);
   return e.dot(cycle_covariance.ldlt().solve(e));
 }
+
+/// The uses of the odometry from vertex `from` to vertex `to` along the chain.
+void add_odometry(const ChainSplit& split, std::size_t from, std::size_t to,
+                  std::vector<Use>& uses) {
+  if (from < to)
+    for (std::size_t s = from; s < to; ++s) uses.push_back({split.chain[s], s, false});
+  for (std::size_t s = from; s-- > to;) uses.push_back({split.chain[s], s, true});
+}
+
+std::pair<std::size_t, std::size_t> span_of(const PoseGraph& g, const ChainSplit& split,
+                                            std::size_t c) {
+  const PoseGraphEdge& e = g.edges[split.closures[c]];
+  return {std::min(e.from, e.to), std::max(e.from, e.to)};
+}
+
+/// The cycle a1 -z1-> b1 -odometry-> b2 -z2^-1-> a2 -odometry-> a1.
+double brute_force_cycle(const PoseGraph& g, const ChainSplit& split, std::size_t k,
+                         std::size_t l) {
+  const auto [a1, b1] = span_of(g, split, k);
+  const auto [a2, b2] = span_of(g, split, l);
+  std::vector<Use> uses{{split.closures[k], a1, false}};
+  add_odometry(split, b1, b2, uses);
+  uses.push_back({split.closures[l], a2, true});
+  add_odometry(split, a2, a1, uses);
+  return brute_force_distance(g, uses);
+}
+
+/// The cycle a -z-> b -odometry-> a.
+double brute_force_cycle(const PoseGraph& g, const ChainSplit& split, std::size_t k) {
+  const auto [a, b] = span_of(g, split, k);
+  std::vector<Use> uses{{split.closures[k], a, false}};
+  add_odometry(split, b, a, uses);
+  return brute_force_distance(g, uses);
+}
+
+/// The Mahalanobis distance of a cycle from its residual and covariance (no heading-only rule).
+double mahalanobis(const Cycle& c) { return c.residual.dot(c.covariance.ldlt().solve(c.residual)); }
 
 TEST(Consistency, MatchesTheCycleComposedStepByStep) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
@@ -157,6 +186,63 @@ TEST(Consistency, MatchesTheCycleComposedStepByStep) {
             << "closures " << k << " and " << l << ", seed " << seed;
       }
   }
+}
+
+TEST(Consistency, MatchesTheCycleComposedStepByStepWhereTheOdometryDrifted) {
+  // Every odometry step turns 0.08 rad more than it did: after a lap the chain is off by
+  // radians, the corrections Y are far from the identity, and a covariance propagated as if they
+  // were not (or a residual in x, y, theta of the cycle instead of Log) is wrong to first order.
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    testing::TrueGraph t = testing::square_laps(3, 6, 3, 0.002, seed);
+    for (PoseGraphEdge& e : t.graph.edges)
+      if (is_odometry(e)) e.measurement = e.measurement * Pose2{0.0, 0.0, 0.08};
+    const ChainSplit split = split_chain(t.graph, "square");
+    const CycleTest test(t.graph, split);
+    ASSERT_GE(test.closures(), 10U);
+    for (std::size_t k = 0; k < test.closures(); ++k) {
+      const double unary = brute_force_cycle(t.graph, split, k);
+      EXPECT_NEAR(mahalanobis(test.cycle(k)), unary, 1e-4 * unary) << "closure " << k;
+      for (std::size_t l = 0; l < test.closures(); ++l) {
+        if (l == k) continue;
+        // Based at the closure with the lower first vertex, as CycleTest anchors it: based
+        // elsewhere the cycle is conjugated by odometry it also contains, which changes its
+        // first-order covariance by terms that vanish only where the cycle is the identity.
+        const bool k_first = span_of(t.graph, split, k).first <= span_of(t.graph, split, l).first;
+        const double expected = k_first ? brute_force_cycle(t.graph, split, k, l)
+                                        : brute_force_cycle(t.graph, split, l, k);
+        EXPECT_NEAR(mahalanobis(test.cycle(k, l)), expected, 1e-4 * expected)
+            << "closures " << k << " and " << l << ", seed " << seed;
+      }
+    }
+  }
+}
+
+TEST(Consistency, BeyondTheLinearRegimeOnlyTheHeadingIsTested) {
+  // A straight chain whose steps show a heading deviation of 0.3 rad: with the linear regime at
+  // kLinearHeadingSd, a closure over 2 steps (heading sd 0.3 sqrt(2) = 0.42 rad) is tested in x,
+  // y, theta; one over 9 steps (sd 0.9 rad) by its heading alone, at the 3-dof threshold scaled
+  // from the 1-dof one.
+  PoseGraph g;
+  for (std::size_t i = 0; i < 12; ++i) g.vertices.push_back({static_cast<double>(i), 0.0, 0.0});
+  const Eigen::Matrix3d step = Eigen::Vector3d(0.01, 0.01, 0.09).asDiagonal();
+  for (std::size_t i = 0; i + 1 < 12; ++i) g.edges.push_back({i, i + 1, {1, 0, 0}, step.inverse()});
+  const Eigen::Matrix3d closure = Eigen::Vector3d(0.01, 0.01, 1e-6).asDiagonal();
+  g.edges.push_back({0, 2, {2.0, 0.0, 0.2}, closure.inverse()});
+  g.edges.push_back({1, 10, {9.0, 0.0, 0.2}, closure.inverse()});
+  const CycleTest test(g, split_chain(g, "g"), {}, {.linear_heading_sd = kLinearHeadingSd});
+  const Cycle near = test.cycle(0), far = test.cycle(1);
+  ASSERT_LT(near.covariance(2, 2), kLinearHeadingSd * kLinearHeadingSd);
+  ASSERT_GT(far.covariance(2, 2), kLinearHeadingSd * kLinearHeadingSd);
+  EXPECT_NEAR(test.squared_distance(0), mahalanobis(near), 1e-9);
+  EXPECT_NEAR(far.residual.z(), 0.2, 1e-12);
+  EXPECT_NEAR(far.covariance(2, 2), 9 * 0.09 + 1e-6, 1e-12);
+  const double factor = chi_square3_quantile(0.99) / chi_square1_quantile(0.99);
+  EXPECT_NEAR(test.squared_distance(1), 0.04 / (9 * 0.09 + 1e-6) * factor, 1e-9);
+  // By default (the covariances as stated: their regime unknown) every cycle in x, y, theta.
+  const CycleTest stated(g, split_chain(g, "g"));
+  EXPECT_NEAR(stated.squared_distance(1), mahalanobis(far), 1e-9);
+  EXPECT_NEAR(chi_square1_quantile(0.99), 6.634896601, 1e-6);  // 2.5758^2
+  EXPECT_NEAR(chi_square1_cdf(3.841458821), 0.95, 1e-9);
 }
 
 TEST(Consistency, GraphHoldsExactlyThePairsBelowTheThresholdOnEveryBackend) {
@@ -184,13 +270,14 @@ TEST(Consistency, GraphHoldsExactlyThePairsBelowTheThresholdOnEveryBackend) {
   for (const auto& [backend, threads] : {std::pair{BackendKind::serial, std::size_t{1}},
                                          {BackendKind::tbb, 2},
                                          {BackendKind::omp, 3}}) {
-    const ConsistencyGraph graph = pairwise_consistency(t.graph, split, {0.99, backend, threads});
+    const ConsistencyGraph graph = pairwise_consistency(
+        t.graph, split, {.confidence = 0.99, .backend = backend, .threads = threads});
     EXPECT_EQ(graph.closures, test.closures());
     EXPECT_EQ(graph.threshold, threshold);
     EXPECT_EQ(graph.pairs, expected);
     EXPECT_EQ(graph.odometry_consistent, unary);
   }
-  EXPECT_THROW(pairwise_consistency(t.graph, split, {1.5}), std::invalid_argument);
+  EXPECT_THROW(pairwise_consistency(t.graph, split, {.confidence = 1.5}), std::invalid_argument);
 }
 
 TEST(Consistency, AFragmentSetGivesTheSameGraphAsItsPoseGraph) {

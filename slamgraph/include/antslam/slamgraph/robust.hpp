@@ -31,6 +31,15 @@
 // with the core. On graphs that state their noise as it is, or up to about 2.5 times as wide, it
 // costs recall and moves the map (docs/robust-closures.md: the threshold was chosen on
 // generated graphs).
+// At the shown noise (shown_noise, off by default) the PCM methods first estimate the noise the
+// graph shows per axis (shown_noise.hpp) and decide everything at it: the pairwise tests, the
+// check and the final solve run on the graph with every covariance at that scale; since the
+// tests are then sharp, each runs at the family-wise confidence (pairwise_confidence), so that a
+// true closure survives all its m - 1 pairwise tests and the check with the inlier confidence,
+// and a cycle whose heading deviation exceeds kLinearHeadingSd is tested on its heading alone
+// (consistency.hpp). On generated graphs it keeps every true closure whichever way the graph
+// misstates its noise; where short cycles show less noise than long ones, or false closures
+// state theirs apart from the graph's, it fails (docs/robust-closures.md).
 // Odometry (edges between consecutive vertices) is always kept with the squared loss. A closure
 // counts as accepted by ls (every closure), by cauchy and dcs when its final residual passes the
 // chi-square test of `inlier_confidence`, by gnc when its final weight is above 1/2, and by the
@@ -51,6 +60,7 @@
 #include "antslam/slamgraph/chain.hpp"
 #include "antslam/slamgraph/consistency.hpp"
 #include "antslam/slamgraph/g2o.hpp"
+#include "antslam/slamgraph/shown_noise.hpp"
 
 namespace antslam::slam {
 
@@ -90,6 +100,8 @@ struct RobustSettings {
                                     ///< GNC truncation c^2 and the acceptance test of cauchy/dcs
   double cauchy_scale = 1.0;        ///< c of the Cauchy loss, chi units (Ceres' CauchyLoss(1))
   double dcs_phi = 1.0;             ///< Phi of DCS, chi^2 units (Agarwal et al. 2013 use 1)
+  bool shown_noise = false;         ///< pcm-*: decide at the noise the graph shows, per axis
+                                    ///< (shown_noise.hpp), with family-wise confidences (above)
   bool check_clique = true;         ///< pcm-*: the joint check of the clique (above)
   double check_phi = 0.0;           ///< pcm-*: Phi of the check's DCS, in multiples of the
                                     ///< clique's median unary distance (above); 0: dcs_phi
@@ -124,6 +136,7 @@ struct RobustResult {
   ChainSplit split;                        ///< the graph's chain and closures
   std::vector<Pose2> poses;                ///< optimised vertex poses
   std::vector<bool> accepted;              ///< per loop closure, in split.closures order
+  std::optional<ShownNoise> shown_noise;   ///< PCM methods: the noise the graph shows
   std::optional<CliqueReport> clique;      ///< PCM methods only
   std::optional<double> check_phi;         ///< joint check: the Phi of its DCS
   std::optional<double> variance_factor;   ///< joint check: the checked graph's factor f
@@ -135,6 +148,12 @@ struct RobustResult {
   double optimize_s = 0.0;                 ///< Ceres solves (all of them)
   double total_s = 0.0;                    ///< the whole call
 };
+
+/// The confidence of each pairwise test among `closures` closures such that a true closure
+/// passes all its closures - 1 tests with probability `confidence` (Bonferroni: the clique keeps
+/// a closure only if it passes every test, so at a per-test confidence a graph of a thousand true
+/// closures would lose a tenth of them to chance).
+double pairwise_confidence(double confidence, std::size_t closures);
 
 /// PCM's selection: a maximum clique of the consistency graph, by branch and bound (pcm_exact) or
 /// by the ants (pcm_aco), with the clique settings, backend and threads of `settings`; what
