@@ -25,12 +25,6 @@ Eigen::Matrix3d adjoint(const Pose2& t) {
   return adjoint(t.x, t.y, std::cos(t.theta), std::sin(t.theta));
 }
 
-/// The covariance at `scale`: D Sigma D, D = diag(xy, xy, theta).
-Eigen::Matrix3d scaled(Eigen::Matrix3d covariance, NoiseScale scale) {
-  const Eigen::Vector3d d(scale.xy, scale.xy, scale.theta);
-  return d.asDiagonal() * covariance * d.asDiagonal();
-}
-
 /// Log of the SE(2) element (x, y, angle theta with cosine c and sine s): (V(theta)^-1 t, theta).
 Eigen::Vector3d se2_log(double x, double y, double theta, double c, double s) {
   double a = 1.0 - theta * theta / 6.0, b = 0.5 * theta;  // sin(t)/t, (1 - cos(t))/t near 0
@@ -58,7 +52,7 @@ double mahalanobis_squared(const Eigen::Vector3d& e, const Eigen::Matrix3d& c) {
 
 }  // namespace
 
-CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split, NoiseScale scale,
+CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split,
                      const ConsistencySettings& settings) {
   const double confidence = settings.confidence;
   if (!(confidence > 0.0 && confidence < 1.0))
@@ -70,10 +64,6 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split, NoiseScale
         "positive, got " +
         std::to_string(settings.linear_heading_sd));
   linear_heading_variance_ = settings.linear_heading_sd * settings.linear_heading_sd;
-  if (!(scale.xy > 0.0 && scale.theta > 0.0 && std::isfinite(scale.xy) &&
-        std::isfinite(scale.theta)))
-    throw std::invalid_argument("pairwise consistency: the noise scale must be positive, got " +
-                                std::to_string(scale.xy) + " and " + std::to_string(scale.theta));
   heading_only_factor_ = chi_square3_quantile(confidence) / chi_square1_quantile(confidence);
   std::vector<Pose2> pose = chain_poses(graph, split);
   double cx = 0.0, cy = 0.0;
@@ -90,8 +80,7 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split, NoiseScale
   prefix_.assign(pose.size(), Eigen::Matrix3d::Zero());
   for (std::size_t k = 0; k < split.chain.size(); ++k) {
     const Eigen::Matrix3d ad = adjoint(pose[k + 1]);
-    const Eigen::Matrix3d sigma =
-        scaled(oriented(graph.edges[split.chain[k]], k).covariance(), scale);
+    const Eigen::Matrix3d sigma = oriented(graph.edges[split.chain[k]], k).covariance();
     prefix_[k + 1] = prefix_[k] + ad * sigma * ad.transpose();
   }
   for (const std::size_t e : split.closures) {
@@ -107,7 +96,7 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split, NoiseScale
     c.c = std::cos(y.theta);
     c.s = std::sin(y.theta);
     const Eigen::Matrix3d ad = adjoint(pose[c.hi]);
-    c.h = ad * scaled(z.covariance(), scale) * ad.transpose();
+    c.h = ad * z.covariance() * ad.transpose();
     closure_.push_back(c);
   }
 }
@@ -163,7 +152,7 @@ double CycleTest::squared_distance(std::size_t k) const { return distance(cycle(
 
 ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& split,
                                       const ConsistencySettings& settings) {
-  const CycleTest test(graph, split, {}, settings);
+  const CycleTest test(graph, split, settings);
   ConsistencyGraph result;
   result.threshold = chi_square3_quantile(settings.confidence);
   const std::size_t m = test.closures();

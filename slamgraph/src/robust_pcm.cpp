@@ -127,7 +127,7 @@ CliqueReport maximum_clique_of(const PoseGraph& tested, const ConsistencySetting
 std::optional<double> median_unary_distance(const PoseGraph& graph, const ChainSplit& split,
                                             const ConsistencySettings& tests,
                                             const std::vector<bool>& closures) {
-  const CycleTest test(graph, split, {}, tests);
+  const CycleTest test(graph, split, tests);
   std::vector<double> d2;
   for (std::size_t k = 0; k < closures.size(); ++k)
     if (closures[k]) d2.push_back(test.squared_distance(k));
@@ -219,8 +219,9 @@ void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double 
     tests.linear_heading_sd = kLinearHeadingSd;
     c2 = chi_square3_quantile(tests.confidence);
   }
-  const PoseGraph graph =
-      result.shown_noise ? at_noise_scale(stated, result.shown_noise->scale) : stated;
+  std::optional<PoseGraph> rescaled;
+  if (result.shown_noise) rescaled = at_noise_scale(stated, result.shown_noise->scale);
+  const PoseGraph& graph = rescaled ? *rescaled : stated;
   result.consistency_s += seconds_since(start);
   result.accepted.assign(m, false);
   if (m > 0) {

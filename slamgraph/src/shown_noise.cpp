@@ -24,15 +24,16 @@ struct ShortCycle {
   Eigen::Vector3d residual;
   Eigen::Matrix3d xy, theta, cross;
 
-  Eigen::Matrix3d covariance(NoiseScale s) const {
-    return s.xy * s.xy * xy + s.theta * s.theta * theta + s.xy * s.theta * cross;
+  /// The squared distance at scale s and the log-determinant of C(s); +infinity unless C(s) is
+  /// positive definite.
+  std::pair<double, double> distance_and_log_det(NoiseScale s) const {
+    const Eigen::LDLT<Eigen::Matrix3d> ldlt(s.xy * s.xy * xy + s.theta * s.theta * theta +
+                                            s.xy * s.theta * cross);
+    if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || !(ldlt.vectorD().minCoeff() > 0.0))
+      return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    return {residual.dot(ldlt.solve(residual)), std::log(ldlt.vectorD().prod())};
   }
-  double squared_distance(NoiseScale s) const {
-    const Eigen::LDLT<Eigen::Matrix3d> ldlt(covariance(s));
-    if (ldlt.info() != Eigen::Success || !ldlt.isPositive())
-      return std::numeric_limits<double>::infinity();
-    return residual.dot(ldlt.solve(residual));
-  }
+  double squared_distance(NoiseScale s) const { return distance_and_log_det(s).first; }
 };
 
 /// For each closure, its `partners` partners among `window` neighbours on each side in (lo, hi)
@@ -53,7 +54,8 @@ std::vector<std::pair<std::size_t, std::size_t>> short_pairs(const PoseGraph& gr
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return span[a] != span[b] ? span[a] < span[b] : a < b;
   });
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  // (heading variance, (k, l)) of every candidate pair kept, k < l.
+  std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> by_length;
   std::vector<std::pair<double, std::size_t>> candidates;
   for (std::size_t i = 0; i < m; ++i) {
     candidates.clear();
@@ -66,22 +68,23 @@ std::vector<std::pair<std::size_t, std::size_t>> short_pairs(const PoseGraph& gr
                       candidates.end());
     for (std::size_t c = 0; c < keep; ++c) {
       const std::size_t k = order[i], l = order[candidates[c].second];
-      pairs.emplace_back(std::min(k, l), std::max(k, l));
+      by_length.push_back({candidates[c].first, {std::min(k, l), std::max(k, l)}});
     }
   }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  // The shortest of them overall: a true closure's neighbour along a revisited place closes a
-  // cycle of a few steps, a false one's nearest partner is as far as chance puts it.
-  std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> by_length;
-  for (const auto& [k, l] : pairs) by_length.push_back({test.cycle(k, l).covariance(2, 2), {k, l}});
+  // Each pair once, then the shortest of them overall: a true closure's neighbour along a
+  // revisited place closes a cycle of a few steps, a false one's nearest partner is as far as
+  // chance puts it.
+  const auto same_pair = [](const auto& a, const auto& b) { return a.second == b.second; };
+  std::sort(by_length.begin(), by_length.end(),
+            [](const auto& a, const auto& b) { return a.second < b.second; });
+  by_length.erase(std::unique(by_length.begin(), by_length.end(), same_pair), by_length.end());
   const std::size_t keep = std::min(
       by_length.size(), std::max(settings.min_shortest,
                                  static_cast<std::size_t>(settings.shortest *
                                                           static_cast<double>(by_length.size()))));
   std::partial_sort(by_length.begin(), by_length.begin() + static_cast<std::ptrdiff_t>(keep),
                     by_length.end());
-  pairs.clear();
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < keep; ++i) pairs.push_back(by_length[i].second);
   std::sort(pairs.begin(), pairs.end());
   return pairs;
@@ -101,11 +104,8 @@ NoiseScale maximum_likelihood(const std::vector<const ShortCycle*>& cycles, Nois
     const NoiseScale s{std::exp(u[0]), std::exp(u[1])};
     double sum = 0.0;
     for (const ShortCycle* c : cycles) {
-      const Eigen::Matrix3d covariance = c->covariance(s);
-      const Eigen::LDLT<Eigen::Matrix3d> ldlt(covariance);
-      if (ldlt.info() != Eigen::Success || !ldlt.isPositive())
-        return std::numeric_limits<double>::infinity();
-      sum += c->residual.dot(ldlt.solve(c->residual)) + std::log(ldlt.vectorD().prod());
+      const auto [d2, log_det] = c->distance_and_log_det(s);
+      sum += d2 + log_det;
     }
     return sum;
   };
@@ -147,8 +147,8 @@ ShownNoise estimate_shown_noise(const PoseGraph& graph, const ChainSplit& split,
   const auto pairs = short_pairs(graph, split, stated, settings);
   result.cycles = pairs.size();
   // C(1,1) = xy + theta + cross, C(2,1) = 4 xy + theta + 2 cross, C(1,2) = xy + 4 theta + 2 cross.
-  const CycleTest wide_xy(graph, split, {2.0, 1.0});
-  const CycleTest wide_theta(graph, split, {1.0, 2.0});
+  const CycleTest wide_xy(at_noise_scale(graph, {2.0, 1.0}), split);
+  const CycleTest wide_theta(at_noise_scale(graph, {1.0, 2.0}), split);
   std::vector<ShortCycle> cycles;
   cycles.reserve(pairs.size());
   for (const auto& [k, l] : pairs) {
@@ -197,6 +197,10 @@ ShownNoise estimate_shown_noise(const PoseGraph& graph, const ChainSplit& split,
 }
 
 PoseGraph at_noise_scale(const PoseGraph& graph, NoiseScale scale) {
+  if (!(scale.xy > 0.0 && scale.theta > 0.0 && std::isfinite(scale.xy) &&
+        std::isfinite(scale.theta)))
+    throw std::invalid_argument("noise scale: must be positive and finite, got " +
+                                std::to_string(scale.xy) + " and " + std::to_string(scale.theta));
   const Eigen::Vector3d inverse(1.0 / scale.xy, 1.0 / scale.xy, 1.0 / scale.theta);
   PoseGraph result = graph;
   for (PoseGraphEdge& e : result.edges)

@@ -229,7 +229,7 @@ TEST(Consistency, BeyondTheLinearRegimeOnlyTheHeadingIsTested) {
   const Eigen::Matrix3d closure = Eigen::Vector3d(0.01, 0.01, 1e-6).asDiagonal();
   g.edges.push_back({0, 2, {2.0, 0.0, 0.2}, closure.inverse()});
   g.edges.push_back({1, 10, {9.0, 0.0, 0.2}, closure.inverse()});
-  const CycleTest test(g, split_chain(g, "g"), {}, {.linear_heading_sd = kLinearHeadingSd});
+  const CycleTest test(g, split_chain(g, "g"), {.linear_heading_sd = kLinearHeadingSd});
   const Cycle near = test.cycle(0), far = test.cycle(1);
   ASSERT_LT(near.covariance(2, 2), kLinearHeadingSd * kLinearHeadingSd);
   ASSERT_GT(far.covariance(2, 2), kLinearHeadingSd * kLinearHeadingSd);

@@ -35,10 +35,6 @@
 // show 0.002 rad is linear over hundreds of steps), so the rule applies only where the tested
 // covariances are the noise the graph shows (ConsistencySettings::linear_heading_sd;
 // shown_noise.hpp, robust.hpp).
-//
-// Every stated covariance can be taken at a per-axis scale (NoiseScale: Sigma -> D Sigma D,
-// D = diag(xy, xy, theta)): the noise a graph shows rather than the noise it states
-// (shown_noise.hpp).
 
 #include <Eigen/Core>
 #include <array>
@@ -54,13 +50,6 @@
 #include "antslam/slamgraph/g2o.hpp"
 
 namespace antslam::slam {
-
-/// Standard-deviation multipliers of every stated covariance: Sigma -> D Sigma D with
-/// D = diag(xy, xy, theta).
-struct NoiseScale {
-  double xy = 1.0;     ///< of the x and y axes
-  double theta = 1.0;  ///< of the heading
-};
 
 /// Beyond this heading standard deviation of a cycle (radians) the test is on its heading alone.
 inline constexpr double kLinearHeadingSd = 0.5;
@@ -95,10 +84,9 @@ struct Cycle {
 /// split.closures), for tests and diagnostics; pairwise_consistency computes the same values.
 class CycleTest {
  public:
-  /// The covariances at `scale`; of `settings`, the confidence and linear_heading_sd. Throws
-  /// std::invalid_argument for a confidence outside (0, 1), a scale or a linear_heading_sd that
-  /// is not positive.
-  CycleTest(const PoseGraph& graph, const ChainSplit& split, NoiseScale scale = {},
+  /// Of `settings`, the confidence and linear_heading_sd. Throws std::invalid_argument for a
+  /// confidence outside (0, 1) or a linear_heading_sd that is not positive.
+  CycleTest(const PoseGraph& graph, const ChainSplit& split,
             const ConsistencySettings& settings = {});
   std::size_t closures() const { return closure_.size(); }
   /// The cycle of closures k and l.

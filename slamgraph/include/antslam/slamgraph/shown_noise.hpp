@@ -24,6 +24,13 @@
 
 namespace antslam::slam {
 
+/// Standard-deviation multipliers of every stated covariance: Sigma -> D Sigma D with
+/// D = diag(xy, xy, theta).
+struct NoiseScale {
+  double xy = 1.0;     ///< of the x and y axes
+  double theta = 1.0;  ///< of the heading
+};
+
 struct ShownNoiseSettings {
   std::size_t partners = 5;       ///< per closure: the short cycles it joins (count)
   std::size_t window = 32;        ///< candidate partners on each side, in (lo, hi) order (count)
@@ -49,7 +56,8 @@ struct ShownNoise {
 ShownNoise estimate_shown_noise(const PoseGraph& graph, const ChainSplit& split,
                                 const ShownNoiseSettings& settings = {});
 
-/// The graph with every information matrix at `scale`: (D Sigma D)^-1 = D^-1 I D^-1.
+/// The graph with every covariance at `scale`, Sigma -> D Sigma D: every information matrix
+/// D^-1 I D^-1. Throws std::invalid_argument for a scale that is not positive and finite.
 PoseGraph at_noise_scale(const PoseGraph& graph, NoiseScale scale);
 
 }  // namespace antslam::slam
