@@ -89,6 +89,10 @@ int main(int argc, char** argv) {
   }
   if (world.size() == 1) {
     if (!failure) return 0;
+    if (failure->signal != 0) {  // stopped at a safe point; the message says what was kept
+      std::fprintf(stderr, "antslam: %s\n", failure->message.c_str());
+      return 128 + failure->signal;
+    }
     std::fprintf(stderr, "antslam: error: %s\n", failure->message.c_str());
     return static_cast<int>(failure->status);
   }

@@ -19,6 +19,7 @@
 #include "antslam/dist/command_world.hpp"
 #include "antslam/dist/communicator.hpp"
 #include "antslam/dist/island_exchange.hpp"
+#include "antslam/io/interrupts.hpp"
 #include "antslam/io/json_output.hpp"
 #include "antslam/io/output_files.hpp"
 #include "antslam/io/progress.hpp"
@@ -88,26 +89,55 @@ void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
             << " s before the budget: reading the instance, candidate lists, the colony\n";
 }
 
+/// Writes the requested outputs; `interrupt_signal` non-zero: the run was stopped by that signal
+/// and every output says it is partial (the tour's comment, a first comment line in the trace,
+/// "interrupted" and "interrupt_signal" in the JSON).
 void write_outputs(const TspCommand& c, io::OutputFiles& outputs, const tsp::TspProblem& problem,
                    const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
                    std::optional<double> optimum, double setup_s,
                    const std::vector<aco::IterationReport>& trace,
                    const std::optional<aco::IslandSettings>& islands,
-                   const std::optional<aco::IslandResult>& island) {
+                   const std::optional<aco::IslandResult>& island, int interrupt_signal) {
   const tsp::Instance& instance = problem.instance();
+  const std::string partial = interrupt_signal != 0
+                                  ? "partial: interrupted by " + io::signal_name(interrupt_signal) +
+                                        " after iteration " + std::to_string(result.iterations)
+                                  : "";
   if (!c.tour_out.empty())
     outputs.write(c.tour_out, [&](std::ostream& out) {
       std::ostringstream comment;
       comment << "length " << std::setprecision(15) << length << ", antslam tsp "
               << c.algorithm.variant << " seed " << settings.aco.seed;
+      if (!partial.empty()) comment << ", " << partial;
       tsp::write_tour(out, instance.name() + ".tour", result.best.path, comment.str());
     });
   if (!c.trace_csv.empty())
-    outputs.write(c.trace_csv, [&](std::ostream& out) { tsp::write_trace_csv(out, trace); });
-  if (!c.json_out.empty())
-    outputs.write(c.json_out, io::json_text(tsp::run_json(problem, settings, result, length,
-                                                          optimum, setup_s, islands, island)));
+    outputs.write(c.trace_csv, [&](std::ostream& out) {
+      if (!partial.empty()) out << "# " << partial << '\n';
+      tsp::write_trace_csv(out, trace);
+    });
+  if (!c.json_out.empty()) {
+    nlohmann::json j =
+        tsp::run_json(problem, settings, result, length, optimum, setup_s, islands, island);
+    j["interrupted"] = interrupt_signal != 0;
+    if (interrupt_signal != 0) j["interrupt_signal"] = io::signal_name(interrupt_signal);
+    outputs.write(c.json_out, io::json_text(j));
+  }
   outputs.commit();
+}
+
+/// What an interrupted run kept, for its last line.
+std::string kept_text(const TspCommand& c, const aco::RunResult& result, double length) {
+  std::ostringstream kept;
+  kept << "kept the best tour of " << result.iterations << " iterations (length "
+       << std::setprecision(15) << length << ")";
+  std::vector<std::string> files;
+  for (const std::filesystem::path* f : {&c.tour_out, &c.trace_csv, &c.json_out})
+    if (!f->empty()) files.push_back(f->string());
+  for (std::size_t i = 0; i < files.size(); ++i)
+    kept << (i == 0 ? ", written to " : ", ") << files[i];
+  if (!files.empty()) kept << " (marked partial)";
+  return kept.str();
 }
 
 void run(const TspCommand& c) {
@@ -139,6 +169,14 @@ void run(const TspCommand& c) {
   }
   if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
 
+  // One process: an interrupt stops the run at the end of an iteration and the outputs keep
+  // what it found. Under MPI the launcher ends the ranks itself; they keep today's behaviour.
+  std::optional<io::StopOnInterrupt> stop_on_interrupt;
+  if (world.size() == 1) {
+    stop_on_interrupt.emplace();
+    termination.stop = stop_on_interrupt->token();
+  }
+
   io::Progress progress(!c.quiet && root && io::stderr_is_terminal());
   std::vector<aco::IterationReport> trace;
   const auto observer = [&](const aco::IterationReport& r) {
@@ -159,6 +197,7 @@ void run(const TspCommand& c) {
   const aco::RunResult result =
       island ? island->run : tsp::solve(problem, settings, termination, observer);
   progress.clear();
+  const int interrupt_signal = stop_on_interrupt ? stop_on_interrupt->signal() : 0;
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count() -
       result.elapsed_s;
@@ -175,7 +214,8 @@ void run(const TspCommand& c) {
     if (island) print_islands(*islands, *island);
   }
   write_outputs(c, outputs, problem, settings, result, length, optimum, setup_s, trace, islands,
-                island);
+                island, interrupt_signal);
+  if (interrupt_signal != 0) throw io::Interrupted(interrupt_signal, kept_text(c, result, length));
 }
 
 }  // namespace

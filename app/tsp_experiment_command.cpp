@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <span>
 #include <sstream>
 #include <string>
@@ -16,6 +17,7 @@
 #include "antslam/dist/command_world.hpp"
 #include "antslam/dist/farm.hpp"
 #include "antslam/dist/result_bytes.hpp"
+#include "antslam/io/interrupts.hpp"
 #include "antslam/io/output_files.hpp"
 #include "antslam/io/progress.hpp"
 #include "antslam/tsp/experiment.hpp"
@@ -72,6 +74,14 @@ void run(const ExperimentCommand& c) {
   if (!c.csv_out.empty()) outputs.add(c.csv_out);
   if (!c.markdown_out.empty()) outputs.add(c.markdown_out);
 
+  // One process: an interrupt ends the run under way and keeps the finished ones. Under MPI the
+  // launcher ends the ranks itself; they keep today's behaviour.
+  std::optional<io::StopOnInterrupt> stop_on_interrupt;
+  if (dist::command_world().size() == 1) {
+    stop_on_interrupt.emplace();
+    e.termination.stop = stop_on_interrupt->token();
+  }
+
   io::Progress progress;
   const auto run_share = [&](std::span<const std::size_t> share) {
     e.only.emplace(share.begin(), share.end());
@@ -92,14 +102,31 @@ void run(const ExperimentCommand& c) {
       [](dist::ByteWriter& out, const tsp::ExperimentRun& r) { write(out, r); },
       dist::read_experiment_run);
   progress.clear();
+  const int interrupt_signal = stop_on_interrupt ? stop_on_interrupt->signal() : 0;
+  const std::string interruption =  // what an interrupted experiment's outputs say
+      interrupt_signal == 0
+          ? ""
+          : "interrupted by " + io::signal_name(interrupt_signal) + " after " +
+                std::to_string(runs.size()) + " of " + std::to_string(tsp::run_count(e)) + " runs";
   const std::string& ls = c.algorithm.local_search;
   tsp::write_summary_markdown(std::cout, runs, ls);
   if (!c.csv_out.empty())
-    outputs.write(c.csv_out, [&](std::ostream& out) { tsp::write_runs_csv(out, runs, ls); });
+    outputs.write(c.csv_out, [&](std::ostream& out) {
+      if (!interruption.empty()) out << "# partial: " << interruption << '\n';
+      tsp::write_runs_csv(out, runs, ls);
+    });
   if (!c.markdown_out.empty())
-    outputs.write(c.markdown_out,
-                  [&](std::ostream& out) { tsp::write_summary_markdown(out, runs, ls); });
+    outputs.write(c.markdown_out, [&](std::ostream& out) {
+      if (!interruption.empty()) out << "Partial: " << interruption << ".\n\n";
+      tsp::write_summary_markdown(out, runs, ls);
+    });
   outputs.commit();
+  if (interrupt_signal != 0) {
+    std::string kept = "kept the " + std::to_string(runs.size()) + " finished runs of " +
+                       std::to_string(tsp::run_count(e));
+    if (!c.csv_out.empty() || !c.markdown_out.empty()) kept += ", written marked partial";
+    throw io::Interrupted(interrupt_signal, kept);
+  }
 }
 
 }  // namespace

@@ -1,9 +1,20 @@
 # Runs `antslam` with ARGS ('|'-separated) and checks the outcome:
 #   EXPECT=error : non-zero exit (STATUS, if set) and stderr matching STDERR_REGEX; with ONE_LINE, stderr is
 #                  exactly one line "antslam: error: ..."; with ABSENT=a,b,..., none of those
-#                  files exists afterwards (they are removed first: nothing was written)
+#                  files exists afterwards (they are removed first: nothing was written); with
+#                  FILE, FILE matching FILE_REGEX (what an interrupted run keeps)
 #   EXPECT=ok    : exit 0, stdout matching STDOUT_REGEX (and not STDOUT_NOT_REGEX, if set), and
 #                  if FILE is set, FILE matching FILE_REGEX; with SAME=a,b[,c,d...], file a byte-identical to b (c to d, ...)
+# FILE, if set, matches FILE_REGEX.
+function(check_file)
+  if(FILE)
+    file(READ "${FILE}" content)
+    if(NOT content MATCHES "${FILE_REGEX}")
+      message(FATAL_ERROR "${FILE} does not match '${FILE_REGEX}':\n${content}")
+    endif()
+  endif()
+endfunction()
+
 string(REPLACE "|" ";" args "${ARGS}")
 if(FILE)
   file(REMOVE "${FILE}")
@@ -32,6 +43,7 @@ if(EXPECT STREQUAL "error")
       message(FATAL_ERROR "${path} was written despite the error")
     endif()
   endforeach()
+  check_file()
 else()
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "expected exit 0, got ${rc}; stderr:\n${err}")
@@ -42,12 +54,7 @@ else()
   if(STDOUT_NOT_REGEX AND out MATCHES "${STDOUT_NOT_REGEX}")
     message(FATAL_ERROR "stdout matches '${STDOUT_NOT_REGEX}':\n${out}")
   endif()
-  if(FILE)
-    file(READ "${FILE}" content)
-    if(NOT content MATCHES "${FILE_REGEX}")
-      message(FATAL_ERROR "${FILE} does not match '${FILE_REGEX}':\n${content}")
-    endif()
-  endif()
+  check_file()
   string(REPLACE "," ";" same "${SAME}")
   list(LENGTH same count)
   if(count GREATER 0)

@@ -15,13 +15,15 @@ kept, recall and RMSE against the stated scale, one line per setting and size).
         [--odometry-stated S]
         [--kinds random random-group local-group]
         [--graphs 2] [--settings recalibrate_below=0 recalibrate_below=1e9] [--threads 2]
+        [--method pcm-aco]
         [--out results/robust-simulated] [--publish] [--quick]
 
 --quick: 1,000 poses, the noise stated 6 times wider, random false closures, one graph.
 --count: false closures per graph (1,000; 0: the clean graphs). --stated-theta: the heading's
 stated scale, every pair with every --stated (default: as x-y). --sigma-theta: the real heading
 noise per step and closure (0.01 rad; 0.05-0.3: heavy rotation noise, as m3500b).
---antslam is not used (the back ends run in this process).
+--method: the robust method every setting runs (pcm-aco; gnc and dcs as peers: `--settings
+default`). --antslam is not used (the back ends run in this process).
 """
 import math
 import os
@@ -67,7 +69,7 @@ def run_cell(p, args, graph, kind, seed, settings):
     for text, options in settings:
         start = time.perf_counter()
         try:
-            r = antslam.slam.robust(spoiled, "pcm-aco", threads=args.threads, **options)
+            r = antslam.slam.robust(spoiled, args.method, threads=args.threads, **options)
         except (TypeError, ValueError) as e:  # an unknown or invalid option
             p.error(f"--settings {text}: {e}")
         seconds = time.perf_counter() - start
@@ -132,7 +134,7 @@ def stated_figure(args, rows, names):
         ax.set_xlabel("stated noise / real noise (standard deviation)")
         ax.set_ylabel(label)
     axes[0].legend(fontsize=7)
-    fig.suptitle(f"pcm-aco on simulated Manhattan graphs, {args.count} false closures "
+    fig.suptitle(f"{args.method} on simulated Manhattan graphs, {args.count} false closures "
                  "(means over kinds and graphs)")
     save_figure(args, fig, "robust-simulated")
 
@@ -155,6 +157,8 @@ def main():
     p.add_argument("--settings", nargs="+",
                    default=["recalibrate_below=0", "recalibrate_below=1e9"],
                    help="settings compared: default or option=value[,option=value]")
+    p.add_argument("--method", default="pcm-aco", choices=["pcm-aco", "pcm-exact", "gnc", "dcs"],
+                   help="the robust method every setting runs")
     p.add_argument("--threads", type=integer_at_least(1), default=2, help="threads of each run")
     args = p.parse_args()
     if args.quick:

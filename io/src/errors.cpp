@@ -1,4 +1,5 @@
 #include "antslam/io/errors.hpp"
+#include "antslam/io/interrupts.hpp"
 
 #include <cstdio>
 #include <new>
@@ -70,6 +71,8 @@ std::string one_line(std::string_view text) {
 Failure failure_of(const std::exception_ptr& error) {
   try {
     std::rethrow_exception(error);
+  } catch (const Interrupted& e) {
+    return {one_line(e.what()), ExitStatus::runtime, e.signal()};
   } catch (const UsageError& e) {
     return {one_line(e.what()), ExitStatus::usage};
   } catch (const InputError& e) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,48 @@ TEST(Experiment, ASubsetOfRunsGivesTheSameRunsInTheOrderAsked) {
   EXPECT_EQ(some[0].variant, aco::Variant::acs);
   e.only = {{16}};
   EXPECT_THROW(run_experiment(e), std::invalid_argument);
+}
+
+TEST(Experiment, AStopKeepsTheFinishedRunsAsTheyWouldHaveEnded) {
+  ExperimentSettings e = small_experiment();
+  e.termination.max_iterations = 200;  // a run cut short is left out, not ended by its budget
+  e.only = {{5, 2}};
+  const std::vector<ExperimentRun> uninterrupted = run_experiment(e);
+  std::stop_source stop;
+  e.termination.stop = stop.get_token();
+  e.only = {{5, 2, 3, 1}};  // run in this order
+  const std::vector<ExperimentRun> some =
+      run_experiment(e, [&](std::size_t index, std::size_t, const ExperimentRun&,
+                            const aco::IterationReport& report) {
+        if (index == 3 && report.iteration == 1) stop.request_stop();
+      });
+  ASSERT_EQ(some.size(), 2U);  // 5 and 2 finished, 3 cut short, 1 never started
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(some[k].seed, uninterrupted[k].seed);
+    EXPECT_EQ(some[k].threads, uninterrupted[k].threads);
+    EXPECT_EQ(some[k].variant, uninterrupted[k].variant);
+    EXPECT_EQ(some[k].result.best.path, uninterrupted[k].result.best.path);
+    EXPECT_EQ(some[k].result.iterations, 200U);
+  }
+  e.only.reset();
+  EXPECT_TRUE(run_experiment(e).empty());  // stopped already: the first run is cut short
+}
+
+TEST(Experiment, AStopAfterARunEndsKeepsIt) {
+  ExperimentSettings e = small_experiment();
+  const std::vector<ExperimentRun> all = run_experiment(e);
+  std::stop_source stop;
+  e.termination.stop = stop.get_token();
+  const std::vector<ExperimentRun> some =
+      run_experiment(e, [&](std::size_t index, std::size_t, const ExperimentRun&,
+                            const aco::IterationReport& report) {
+        if (index == 1 && report.iteration == 15) stop.request_stop();  // its last iteration
+      });
+  ASSERT_EQ(some.size(), 2U);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(some[k].result.best.path, all[k].result.best.path);
+    EXPECT_EQ(some[k].result.reason, aco::StopReason::iterations);
+  }
 }
 
 TEST(Experiment, ReportsHaveARowPerRunAndPerGroup) {

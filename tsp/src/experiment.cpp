@@ -45,6 +45,13 @@ std::vector<ExperimentRun> run_experiment(const ExperimentSettings& settings,
   for (std::size_t i = 0; i < total; ++i) wanted[i] = i;
   if (settings.only) wanted = *settings.only;
   std::vector<ExperimentRun> runs(wanted.size());
+  std::vector<bool> finished(wanted.size(), false);
+  const auto finished_runs = [&] {  // in `wanted` order
+    std::vector<ExperimentRun> kept;
+    for (std::size_t w = 0; w < runs.size(); ++w)
+      if (finished[w]) kept.push_back(std::move(runs[w]));
+    return kept;
+  };
   // Instance-major, so that each instance is read once for the runs that need it.
   for (std::size_t k = 0; k < settings.instances.size(); ++k) {
     const auto of_instance = [&](std::size_t i) { return i / per_instance == k; };
@@ -77,8 +84,11 @@ std::vector<ExperimentRun> run_experiment(const ExperimentSettings& settings,
       r.result = solve(problem, solver, termination, [&](const aco::IterationReport& report) {
         if (observer) observer(index, total, r, report);
       });
+      if (r.result.reason == aco::StopReason::interrupted) return finished_runs();  // cut short
       r.length = problem.instance().tour_length(r.result.best.path);
       runs[w] = std::move(r);
+      finished[w] = true;
+      if (termination.stop.stop_requested()) return finished_runs();
     }
   }
   return runs;

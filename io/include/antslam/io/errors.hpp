@@ -13,7 +13,9 @@
 //   3       runtime  the run could not finish: out of memory, outputs could not be written,
 //                    an internal error (std::bad_alloc, OutputError, anything else)
 //   130/143 -        interrupted by SIGINT/SIGTERM (the process ends by the signal; temporary
-//                    files are removed first, interrupts.hpp)
+//                    files are removed first, interrupts.hpp), or a command that stopped at a
+//                    safe point and wrote what it kept, marked partial (Interrupted: the line
+//                    is "antslam: interrupted (<signal>); <what was kept>")
 
 #include <exception>
 #include <filesystem>
@@ -48,6 +50,7 @@ class OutputError : public std::runtime_error {
 struct Failure {
   std::string message;  ///< one line, without the "antslam: error: " prefix
   ExitStatus status = ExitStatus::runtime;
+  int signal = 0;  ///< an interrupted command (Interrupted): the signal; the exit is 128 + it
 };
 
 /// The failure an exception stands for (call inside a catch block or with a captured pointer).

@@ -5,11 +5,20 @@
 // status 128 + signal number). Work that must not be cut in half (moving a command's outputs
 // into place) runs inside without_interrupts(), which the watcher waits for.
 //
+// A command that can stop at a safe point and keep what it found holds a StopOnInterrupt while
+// it works: the first signal then only requests a stop on its token (the engine's Termination::
+// stop), the command writes its results marked partial and throws Interrupted, and the program
+// ends with status 128 + signal number and one line saying what was kept. A second signal ends
+// the process at once, as without a StopOnInterrupt.
+//
 // SIGKILL cannot be caught: what a killed run leaves (directories named
 // ".antslam-staging.<pid>") is removed by the next run that writes beside it (output_files.hpp).
 
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
+#include <stop_token>
+#include <string>
 
 namespace antslam::io {
 
@@ -26,5 +35,36 @@ void remove_temporary(const std::filesystem::path& path);
 
 /// Runs f() with interrupts held back: one arriving meanwhile takes effect when f() returns.
 void without_interrupts(const std::function<void()>& f);
+
+/// While one lives, the first interrupt requests a stop on token() instead of ending the
+/// process (above). At most one lives at a time.
+class StopOnInterrupt {
+ public:
+  StopOnInterrupt();
+  ~StopOnInterrupt();
+  StopOnInterrupt(const StopOnInterrupt&) = delete;
+  StopOnInterrupt& operator=(const StopOnInterrupt&) = delete;
+
+  std::stop_token token() const { return source_.get_token(); }
+  /// The signal that requested the stop; 0 while none did.
+  int signal() const;
+
+ private:
+  std::stop_source source_;
+};
+
+/// "SIGINT", "SIGTERM", "SIGHUP", else "signal N".
+std::string signal_name(int signal);
+
+/// A command stopped by an interrupt after writing what it kept: what() is one line,
+/// "interrupted (<signal's name>); <kept>", and the program exits with 128 + signal.
+class Interrupted : public std::runtime_error {
+ public:
+  Interrupted(int signal, const std::string& kept);
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
 
 }  // namespace antslam::io

@@ -65,7 +65,9 @@ using ExperimentObserver =
     std::function<void(std::size_t index, std::size_t total, const ExperimentRun& run,
                        const aco::IterationReport& report)>;
 
-/// Every run (or those of settings.only), instance-major, then variant, threads and seed.
+/// Every run (or those of settings.only), instance-major, then variant, threads and seed. Once
+/// settings.termination.stop is requested, the runs finished until then (a run it cut short is
+/// left out).
 std::vector<ExperimentRun> run_experiment(const ExperimentSettings& settings,
                                           const ExperimentObserver& observer = {});
 
