@@ -20,6 +20,7 @@
 #include "antslam/dist/result_bytes.hpp"
 #include "antslam/eval/evaluation.hpp"
 #include "antslam/io/errors.hpp"
+#include "antslam/io/interrupts.hpp"
 #include "antslam/io/memory.hpp"
 #include "antslam/io/output_files.hpp"
 #include "antslam/io/progress.hpp"
@@ -149,16 +150,39 @@ void run(const OptimizeOptions& options) {
   slam::read_study_reference(input, o.reference);
   io::require_memory("--trials " + std::to_string(o.trials) + " (the trials' results)",
                      static_cast<double>(o.trials) * slam::trial_result_bytes(input.poses()));
+  // One process: an interrupt stops the study, which keeps its finished trials (one trial: what
+  // it found). Under MPI the launcher ends the ranks itself; they keep today's behaviour.
+  std::optional<io::StopOnInterrupt> stop_on_interrupt;
+  if (world.size() == 1) {
+    stop_on_interrupt.emplace();
+    o.s.stop = stop_on_interrupt->token();
+  }
   const std::vector<slam::OptimizeResult> trials = run_study(input, o);
+  const int interrupt_signal = stop_on_interrupt ? stop_on_interrupt->signal() : 0;
+  if (interrupt_signal != 0 && trials.empty())
+    throw io::Interrupted(interrupt_signal, "no trial had finished; nothing written");
   slam::StudyResult r = slam::summarize(o.input, o.s, trials);
+  if (interrupt_signal != 0)
+    r.interrupted = slam::StudyInterruption{io::signal_name(interrupt_signal), o.trials};
   if (!input.reference.empty()) r.error = eval::frames_error(r.best.frames, input.reference);
   if (!world.is_root()) return;  // the colonies' ranks: rank 0 alone writes and prints
 
+  std::string partial;  // the first line of the CSV files of an interrupted study
+  if (r.interrupted)
+    partial = "# partial: interrupted by " + r.interrupted->signal +
+              (o.trials == 1 ? std::string(": the trial's best so far")
+                             : " after " + std::to_string(trials.size()) + " of " +
+                                   std::to_string(o.trials) + " trials") +
+              "\n";
   outputs.write(result_json, [&](std::ostream& out) { slam::write_result(out, r); });
-  outputs.write(trials_csv,
-                [&](std::ostream& out) { slam::write_trials_csv(out, trials, o.s.seed); });
-  outputs.write(convergence_csv,
-                [&](std::ostream& out) { slam::write_convergence_csv(out, trials); });
+  outputs.write(trials_csv, [&](std::ostream& out) {
+    out << partial;
+    slam::write_trials_csv(out, trials, o.s.seed);
+  });
+  outputs.write(convergence_csv, [&](std::ostream& out) {
+    out << partial;
+    slam::write_convergence_csv(out, trials);
+  });
   outputs.write(times_json, [&](std::ostream& out) { slam::write_times_json(out, trials); });
   if (!o.g2o_out.empty())
     outputs.write(o.g2o_out, [&](std::ostream& out) {
@@ -175,6 +199,15 @@ void run(const OptimizeOptions& options) {
               prefix.c_str(), prefix.c_str(), prefix.c_str());
   if (!o.g2o_out.empty()) std::printf("wrote %s\n", o.g2o_out.c_str());
   if (!o.tum_out.empty()) std::printf("wrote %s\n", o.tum_out.c_str());
+  if (r.interrupted) {
+    std::fflush(stdout);
+    throw io::Interrupted(
+        interrupt_signal,
+        (o.trials == 1 ? std::string("kept the trial's best so far")
+                       : "kept trials 0-" + std::to_string(trials.size() - 1) + " of " +
+                             std::to_string(o.trials) + " (finished before the stop)") +
+            ", written marked partial");
+  }
 }
 
 }  // namespace

@@ -74,10 +74,14 @@ def solve(costs, pairwise=None, term=None, *, heuristic=None, variant="mmas", it
     p.variant = variant
     p.seed = seed
     _options.apply(p, _options.ENGINE, parameters, "solve")
-    run = _core.aco.solve_layered(
-        unary, pairs, eta, term, p,
-        _options.termination(iterations, time_limit, cpu_time_limit, target, stagnation),
-        backend, threads, observer)
+    try:
+        run = _core.aco.solve_layered(
+            unary, pairs, eta, term, p,
+            _options.termination(iterations, time_limit, cpu_time_limit, target, stagnation),
+            backend, threads, observer)
+    except _core.Interrupted as stopped:
+        stopped.result = Result.of(stopped.result)
+        raise
     return Result.of(run)
 
 

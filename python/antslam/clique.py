@@ -74,7 +74,11 @@ def aco(graph, variant=None, seed=1, **options):
     _options.apply(settings.parameters, _options.ENGINE, engine, "aco")
     _options.apply(settings.termination, _STOP, stop, "aco")
     _options.apply(settings, _SEARCH, options, "aco")
-    clique, iterations, reason = _core.clique.aco(graph, settings)
+    try:
+        clique, iterations, reason = _core.clique.aco(graph, settings)
+    except _core.Interrupted as stopped:
+        stopped.result = AcoResult(*stopped.result)
+        raise
     return AcoResult(clique, iterations, reason)
 
 

@@ -107,7 +107,11 @@ def optimize(subject, method="hybrid", *, threads=1, samples=20, observer=None, 
     graduation_factor, refine_each, ceres_iterations, ceres_tolerance, ceres_time_limit,
     max_paths, initial ((N - 1, 3) alignments: the start of nlopt and ceres on a set)."""
     settings = optimizer_settings(method, **options)
-    return _run(subject, 1, threads, samples, observer, None, settings)[0]
+    try:
+        return _run(subject, 1, threads, samples, observer, None, settings)[0]
+    except _core.Interrupted as stopped:
+        stopped.result = stopped.result[0] if stopped.result else None
+        raise
 
 
 @dataclass(frozen=True)
@@ -139,9 +143,13 @@ def study(subject, method="hybrid", trials=20, *, threads=1, samples=20, progres
     `threads`; the results do not depend on the threads. progress(finished) is called after
     each trial. Options as in optimize."""
     settings = optimizer_settings(method, **options)
-    results = _run(subject, trials, threads, samples, None, progress, settings)
-    name = subject.name
-    return Study(results, _core.slam.summarize(name, settings, results))
+    try:
+        results = _run(subject, trials, threads, samples, None, progress, settings)
+    except _core.Interrupted as stopped:  # trials 0 to k - 1, as in the whole study
+        stopped.result = (Study(stopped.result, _core.slam.summarize(
+            subject.name, settings, stopped.result)) if stopped.result else None)
+        raise
+    return Study(results, _core.slam.summarize(subject.name, settings, results))
 
 
 chain = _core.slam.chain

@@ -80,8 +80,12 @@ def solve(instance, variant="mmas", iterations=200, seed=3, *, local_search="3op
     _options.apply(settings, _SOLVER, dict(solver, local_search=local_search), "solve")
     settings.ls_neighbours = neighbours
     problem.ls_neighbours = neighbours
-    run = _core.tsp.solve_settings(
-        instance, settings, problem,
-        _options.termination(iterations, time_limit, cpu_time_limit, target, stagnation),
-        observer, colonies, exchange_every, topology)
+    try:
+        run = _core.tsp.solve_settings(
+            instance, settings, problem,
+            _options.termination(iterations, time_limit, cpu_time_limit, target, stagnation),
+            observer, colonies, exchange_every, topology)
+    except _core.Interrupted as stopped:
+        stopped.result = Result.of(stopped.result)
+        raise
     return Result.of(run)

@@ -88,12 +88,17 @@ void bind_clique(py::module_& m) {
       "aco",
       [](const clique::Graph& g, const clique::AcoSearchSettings& settings) {
         aco::resolve(settings.backend, settings.threads);  // serial on several threads fails here
-        const clique::AcoSearchResult r = run_interruptible([&](PythonThread& python) {
-          clique::AcoSearchSettings s = settings;
-          s.termination.stop = python.stop_token();
-          return clique::maximum_clique_aco(g, s);
-        });
-        return py::make_tuple(r.clique, r.iterations, std::string(aco::to_string(r.reason)));
+        const auto as_tuple = [](const clique::AcoSearchResult& r) {
+          return py::object(
+              py::make_tuple(r.clique, r.iterations, std::string(aco::to_string(r.reason))));
+        };
+        return as_tuple(run_interruptible(
+            [&](PythonThread& python) {
+              clique::AcoSearchSettings s = settings;
+              s.termination.stop = python.stop_token();
+              return clique::maximum_clique_aco(g, s);
+            },
+            as_tuple));
       },
       py::arg("graph"), py::arg("settings"), "(clique, iterations, stop reason)");
   m.def(

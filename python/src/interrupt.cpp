@@ -4,6 +4,24 @@
 
 namespace antslam::python {
 
+void bind_interrupted(py::module_& m) {
+  PyObject* type = PyErr_NewExceptionWithDoc(
+      "antslam._core.Interrupted",
+      "Ctrl-C (or a KeyboardInterrupt raised by an observer) stopped a long call; `result` is "
+      "what the run had found, of the type the call returns.",
+      PyExc_KeyboardInterrupt, nullptr);
+  if (type == nullptr) throw py::error_already_set();
+  m.attr("Interrupted") = py::reinterpret_steal<py::object>(type);
+}
+
+void raise_interrupted(py::object partial) {
+  const py::object type = py::module_::import("antslam._core").attr("Interrupted");
+  py::object error = type("interrupted: what the run had found is in .result");
+  error.attr("result") = std::move(partial);
+  PyErr_SetObject(type.ptr(), error.ptr());
+  throw py::error_already_set();
+}
+
 void PythonThread::call(const std::function<void()>& f) {
   const std::lock_guard one_at_a_time(calls_);
   std::unique_lock lock(mutex_);

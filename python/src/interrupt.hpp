@@ -5,8 +5,11 @@
 // the worker hands over (the user's observers), so that Python code runs on the thread that
 // called (where plotting libraries expect it). A KeyboardInterrupt, or an exception of a
 // handed-over call or of a Python cost term, requests stop: the library ends the run at its
-// next check (the colony after its iteration, NLopt at its next evaluation), the result is
-// dropped and the Python error is raised. Exceptions of the work itself are raised as they are
+// next check (the colony after its iteration, NLopt at its next evaluation) and the Python
+// error is raised; a KeyboardInterrupt as antslam.Interrupted (a KeyboardInterrupt) whose
+// `result` is what the run had found (converted by to_python as the call's return value would
+// be; the Python wrappers convert it further as they convert a return value). Exceptions of the
+// work itself are raised as they are
 // (std::invalid_argument as ValueError, std::runtime_error as RuntimeError, with the library's
 // one-line message).
 
@@ -56,9 +59,23 @@ class PythonThread {
   std::optional<py::error_already_set> error_;
 };
 
+/// Registers antslam._core.Interrupted, a KeyboardInterrupt with a `result` attribute.
+void bind_interrupted(py::module_& m);
+
+/// Raises antslam._core.Interrupted with `partial` as its result.
+[[noreturn]] void raise_interrupted(py::object partial);
+
+/// Converts a result to Python as pybind11 converts a return value.
+struct CastToPython {
+  template <class Result>
+  py::object operator()(Result&& r) const {
+    return py::cast(std::forward<Result>(r));
+  }
+};
+
 /// Runs work(python) on a worker thread as described above and returns its result.
-template <class Work>
-auto run_interruptible(Work&& work) {
+template <class Work, class ToPython = CastToPython>
+auto run_interruptible(Work&& work, ToPython&& to_python = {}) {
   using Result = decltype(work(std::declval<PythonThread&>()));
   PythonThread python;
   std::optional<Result> result;
@@ -76,7 +93,11 @@ auto run_interruptible(Work&& work) {
     python.serve();
     worker.join();
   }
-  if (python.error()) throw *python.error();
+  if (python.error()) {
+    if (result && python.error()->matches(PyExc_KeyboardInterrupt))
+      raise_interrupted(to_python(std::move(*result)));
+    throw *python.error();
+  }
   if (failure) std::rethrow_exception(failure);
   return std::move(*result);
 }

@@ -11,6 +11,7 @@
 #include "antslam/io/errors.hpp"
 #include "antslam/version.hpp"
 #include "bindings.hpp"
+#include "interrupt.hpp"
 
 namespace antslam::python {
 
@@ -70,6 +71,7 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception_translator(translate_library_errors);
   m.doc() = "antslam: ant colony optimization for SLAM map optimization and the TSP";
   m.attr("__version__") = antslam::kVersion;
+  bind_interrupted(m);
   py::module_ aco = m.def_submodule("aco", "The colony engine: parameters and layered problems");
   bind_engine(aco);
   bind_layered(aco);

@@ -85,6 +85,11 @@ std::uint64_t JsonField::integer() const {
   return value_->get<std::uint64_t>();
 }
 
+bool JsonField::boolean() const {
+  if (!value_->is_boolean()) fail("expected true or false");
+  return value_->get<bool>();
+}
+
 std::string JsonField::string() const {
   if (!value_->is_string()) fail("expected a string");
   return value_->get<std::string>();

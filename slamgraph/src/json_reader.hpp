@@ -40,6 +40,7 @@ class JsonField {
   double number() const;
   std::uint64_t integer() const;
   std::string string() const;
+  bool boolean() const;
   /// [x, y, theta] with finite numbers.
   Pose2 pose() const;
   /// {"mean": [x, y, theta], "covariance": [[3], [3], [3]]}, symmetric positive definite.

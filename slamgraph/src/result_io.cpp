@@ -73,6 +73,125 @@ void read_best(const JsonField& f, StudyResult& r) {
   if (f.has("time_to_best_s")) b.time_to_best_s = f.at("time_to_best_s").number();
 }
 
+json settings_json(const OptimizeSettings& s) {
+  const aco::Parameters& p = s.aco;
+  const RefineSettings& r = s.refine;
+  return {{"iterations", s.iterations},
+          {"time_limit_s", s.time_limit_s},
+          {"aco",
+           {{"ants", p.ants},
+            {"alpha", p.alpha},
+            {"beta", p.beta},
+            {"rho", p.rho},
+            {"q0", p.q0},
+            {"xi", p.xi},
+            {"elite_weight", p.elite_weight},
+            {"rank_width", p.rank_width},
+            {"p_best", p.p_best},
+            {"restarts", p.restarts},
+            {"restart_stagnant", p.restart_stagnant},
+            {"p0", p.p0},
+            {"glob_best_freq", p.glob_best_freq},
+            {"tau_max", p.tau_max},
+            {"tau_init", p.tau_init},
+            {"hybrid_deposit", p.hybrid_deposit}}},
+          {"refine",
+           {{"algorithm", std::string(to_string(r.algorithm))},
+            {"bound_sigmas", r.bound_sigmas},
+            {"max_evaluations", r.max_evaluations},
+            {"relative_tolerance", r.relative_tolerance},
+            {"time_limit_s", r.time_limit_s},
+            {"lbfgs_memory", r.lbfgs_memory},
+            {"graduated", r.graduated},
+            {"graduation_factor", r.graduation_factor}}},
+          {"refine_each_improvement", s.refine_each_improvement},
+          {"ceres",
+           {{"max_iterations", s.ceres.max_iterations},
+            {"function_tolerance", s.ceres.function_tolerance},
+            {"time_limit_s", s.ceres.time_limit_s}}},
+          {"max_exhaustive_paths", s.max_exhaustive_paths},
+          {"islands", s.islands ? json{{"colonies", s.islands->colonies},
+                                       {"exchange_every", s.islands->exchange_every},
+                                       {"topology", aco::to_string(s.islands->topology)}}
+                                : json(nullptr)}};
+}
+
+/// An int field (counts stored as int by NLopt and Ceres).
+int int_field(const JsonField& f) {
+  const std::uint64_t v = f.integer();
+  if (v > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) f.fail("too large");
+  return static_cast<int>(v);
+}
+
+OptimizeSettings read_settings(const JsonField& f, const StudyResult& study) {
+  f.only({"iterations", "time_limit_s", "aco", "refine", "refine_each_improvement", "ceres",
+          "max_exhaustive_paths", "islands"});
+  OptimizeSettings s;
+  s.method = study.method;
+  s.seed = study.seed;
+  s.iterations = f.at("iterations").integer();
+  s.time_limit_s = f.at("time_limit_s").number();
+  const JsonField a = f.at("aco");
+  a.only({"ants", "alpha", "beta", "rho", "q0", "xi", "elite_weight", "rank_width", "p_best",
+          "restarts", "restart_stagnant", "p0", "glob_best_freq", "tau_max", "tau_init",
+          "hybrid_deposit"});
+  aco::Parameters& p = s.aco;
+  p.ants = a.at("ants").integer();
+  p.alpha = a.at("alpha").number();
+  p.beta = a.at("beta").number();
+  p.rho = a.at("rho").number();
+  p.q0 = a.at("q0").number();
+  p.xi = a.at("xi").number();
+  p.elite_weight = a.at("elite_weight").number();
+  p.rank_width = a.at("rank_width").integer();
+  p.p_best = a.at("p_best").number();
+  p.restarts = a.at("restarts").boolean();
+  p.restart_stagnant = a.at("restart_stagnant").integer();
+  p.p0 = a.at("p0").number();
+  p.glob_best_freq = a.at("glob_best_freq").integer();
+  p.tau_max = a.at("tau_max").number();
+  p.tau_init = a.at("tau_init").number();
+  p.hybrid_deposit = a.at("hybrid_deposit").number();
+  const JsonField r = f.at("refine");
+  r.only({"algorithm", "bound_sigmas", "max_evaluations", "relative_tolerance", "time_limit_s",
+          "lbfgs_memory", "graduated", "graduation_factor"});
+  try {
+    s.refine.algorithm = parse_refine_algorithm(r.at("algorithm").string());
+  } catch (const std::invalid_argument& e) {
+    r.at("algorithm").fail(e.what());
+  }
+  s.refine.bound_sigmas = r.at("bound_sigmas").number();
+  s.refine.max_evaluations = int_field(r.at("max_evaluations"));
+  s.refine.relative_tolerance = r.at("relative_tolerance").number();
+  s.refine.time_limit_s = r.at("time_limit_s").number();
+  s.refine.lbfgs_memory = int_field(r.at("lbfgs_memory"));
+  s.refine.graduated = r.at("graduated").boolean();
+  s.refine.graduation_factor = r.at("graduation_factor").number();
+  s.refine_each_improvement = f.at("refine_each_improvement").boolean();
+  const JsonField c = f.at("ceres");
+  c.only({"max_iterations", "function_tolerance", "time_limit_s"});
+  s.ceres.max_iterations = int_field(c.at("max_iterations"));
+  s.ceres.function_tolerance = c.at("function_tolerance").number();
+  s.ceres.time_limit_s = c.at("time_limit_s").number();
+  s.max_exhaustive_paths = f.at("max_exhaustive_paths").integer();
+  if (!f.at("islands").json().is_null()) {
+    const JsonField i = f.at("islands");
+    i.only({"colonies", "exchange_every", "topology"});
+    aco::IslandSettings islands{.colonies = i.at("colonies").integer(),
+                                .exchange_every = i.at("exchange_every").integer()};
+    const std::string topology = i.at("topology").string();
+    if (topology != "ring" && topology != "full") i.at("topology").fail("expected ring or full");
+    islands.topology = topology == "full" ? aco::Topology::full : aco::Topology::ring;
+    s.islands = islands;
+  }
+  try {
+    validate(s);
+  } catch (const std::invalid_argument& e) {
+    f.fail(e.what());
+  }
+  return s;
+}
+
 /// The shortest text that reads back as the same double.
 std::string shortest(double v) {
   char buffer[32];
@@ -102,6 +221,15 @@ StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& s
   r.elapsed_s = statistics(elapsed);
   r.best = trials[r.best_trial];
   r.best.convergence.clear();
+  r.settings = settings;
+  r.settings->threads = 1;  // neither decides a result: they are not part of it
+  r.settings->backend = aco::BackendKind::automatic;
+  r.settings->stop = {};
+  r.settings->exchange = aco::in_process_exchange;
+  if (r.settings->islands) {  // the whole archipelago, not this process's share of it
+    r.settings->islands->first = 0;
+    r.settings->islands->local = 0;
+  }
   return r;
 }
 
@@ -115,6 +243,12 @@ void write_result(std::ostream& out, const StudyResult& r) {
               {"weight", statistics_json(r.weight)},
               {"chi2", statistics_json(r.chi2)},
               {"best", best_json(r)}};
+  if (r.settings) doc["settings"] = settings_json(*r.settings);
+  if (r.interrupted) {
+    doc["interrupted"] = true;
+    doc["interrupt_signal"] = r.interrupted->signal;
+    doc["trials_requested"] = r.interrupted->trials_requested;
+  }
   if (r.error)
     doc["trajectory_error"] = {{"rmse_m", r.error->rmse_m},
                                {"max_m", r.error->max_m},
@@ -129,7 +263,8 @@ StudyResult read_result(std::istream& in, const std::string& source) {
   const JsonField root(doc, source, "");
   detail::check_header(root, kResultFormat, kResultVersion);
   root.only({"format", "version", "fragment_set", "method", "seed", "trials", "weight", "chi2",
-             "elapsed_s", "best", "trajectory_error"});
+             "elapsed_s", "best", "trajectory_error", "interrupted", "interrupt_signal",
+             "trials_requested", "settings"});
   StudyResult r;
   r.fragment_set = root.at("fragment_set").string();
   try {
@@ -144,6 +279,13 @@ StudyResult read_result(std::istream& in, const std::string& source) {
   r.chi2 = read_statistics(root.at("chi2"));
   if (root.has("elapsed_s")) r.elapsed_s = read_statistics(root.at("elapsed_s"));  // version 1
   read_best(root.at("best"), r);
+  if (root.has("settings")) r.settings = read_settings(root.at("settings"), r);
+  if (root.has("interrupted") && root.at("interrupted").boolean()) {
+    r.interrupted = StudyInterruption{root.at("interrupt_signal").string(),
+                                      root.at("trials_requested").integer()};
+    if (r.interrupted->trials_requested < r.trials)
+      root.at("trials_requested").fail("must be >= trials");
+  }
   if (root.has("trajectory_error")) {
     const JsonField e = root.at("trajectory_error");
     e.only({"rmse_m", "max_m", "rmse_deg", "poses"});

@@ -50,20 +50,26 @@ std::vector<OptimizeResult> run_trials(const TrialRunner& run, const OptimizeSet
     return results;
   }
   std::vector<OptimizeResult> results(indices.size());
+  std::vector<std::uint8_t> complete(indices.size(), 0);  // finished before any stop
   std::mutex mutex;
   std::size_t finished = 0;
   aco::with_backend(trials.backend, trials.threads, [&](auto backend) {
     backend.for_each(indices.size(), [&](std::size_t k) {
+      if (settings.stop.stop_requested()) return;
       OptimizeSettings s = settings;
       s.seed = trial_seed(settings.seed, indices[k]);
       s.threads = 1;
       s.backend = aco::BackendKind::serial;
       results[k] = run(s, {});
+      if (settings.stop.stop_requested()) return;  // perhaps cut short
+      complete[k] = 1;
       const std::lock_guard lock(mutex);
       ++finished;
       if (observer) observer(finished);
     });
   });
+  const auto first_missing = std::find(complete.begin(), complete.end(), 0);
+  results.resize(static_cast<std::size_t>(first_missing - complete.begin()));
   return results;
 }
 

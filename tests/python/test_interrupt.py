@@ -66,6 +66,66 @@ def test_an_observers_exception_ends_the_run():
     assert calls == [1, 2, 3]
 
 
+def test_an_interrupt_keeps_the_run_so_far():
+    instance = antslam.tsp.read(DATA / "tsplib" / "pr1002.tsp")
+
+    def observer(info):
+        if info.iteration == 3:
+            raise KeyboardInterrupt
+    with pytest.raises(antslam.Interrupted) as stopped:
+        antslam.tsp.solve(instance, iterations=10**6, local_search="none", observer=observer)
+    assert isinstance(stopped.value, KeyboardInterrupt)
+    kept = stopped.value.result
+    assert isinstance(kept, antslam.tsp.Result)
+    assert (kept.iterations, kept.stop_reason) == (3, "interrupted")
+    whole = antslam.tsp.solve(instance, iterations=3, local_search="none")
+    assert kept.length == whole.length == instance.tour_length(kept.tour)
+
+
+def test_an_interrupted_study_keeps_its_first_finished_trials():
+    fragments = antslam.slam.synth("paper9")
+    whole = antslam.slam.study(fragments, trials=6, iterations=30, seed=4)
+
+    def progress(finished):
+        if finished == 2:
+            raise KeyboardInterrupt
+    with pytest.raises(antslam.Interrupted) as stopped:
+        antslam.slam.study(fragments, trials=6, iterations=30, seed=4, progress=progress)
+    kept = stopped.value.result
+    assert isinstance(kept, antslam.slam.Study)
+    assert 2 <= len(kept.results) < 6
+    for mine, theirs in zip(kept.results, whole.results):
+        assert mine.weight == theirs.weight
+
+
+def test_an_interrupted_layered_run_keeps_its_best():
+    def observer(info):
+        if info.iteration == 2:
+            raise KeyboardInterrupt
+    with pytest.raises(antslam.Interrupted) as stopped:
+        antslam.aco.solve(np.ones((30, 8)), iterations=10**6, observer=observer)
+    assert isinstance(stopped.value.result, antslam.aco.Result)
+    assert stopped.value.result.iterations == 2
+
+
+def test_ctrl_c_keeps_the_clique_found_so_far():
+    rng = np.random.default_rng(1)
+    n = 400
+    edges = [(i, j) for i in range(n) for j in range(i + 1, n) if rng.random() < 0.5]
+    graph = antslam.clique.Graph(n, edges)
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(antslam.Interrupted) as stopped:
+        antslam.clique.aco(graph, iterations=10**9, stagnation=0, time_limit=0)
+    timer.join()
+    kept = stopped.value.result
+    assert isinstance(kept, antslam.clique.AcoResult)
+    assert kept.stop_reason == "interrupted"
+    members = set(kept.vertices.tolist())
+    assert len(members) >= 2
+    assert all((min(a, b), max(a, b)) in set(edges) for a in members for b in members if a != b)
+
+
 def test_the_gil_is_released_while_the_ants_run():
     ticks = []
     stop = threading.Event()

@@ -119,6 +119,31 @@ TEST(Trials, ASubsetRunsEachTrialAsTheWholeStudyDoes) {
   EXPECT_THROW(run_trials(set, s, {.trials = 5, .only = {{5}}}), std::invalid_argument);
 }
 
+TEST(Trials, AStopKeepsTheTrialsFinishedInOrderBeforeIt) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  OptimizeSettings s = quick(Method::hybrid, 5);
+  const auto all = run_trials(set, s, {.trials = 6, .threads = 1});
+  std::stop_source stop;
+  s.stop = stop.get_token();
+  std::size_t calls = 0;
+  const TrialRunner stop_in_trial_3 = [&](const OptimizeSettings& t, const OptimizeObserver& o) {
+    ++calls;
+    if (t.seed == trial_seed(5, 3)) stop.request_stop();  // trial 3 is cut short
+    return optimize(set, t, o);
+  };
+  const auto kept = run_trials(stop_in_trial_3, s, {.trials = 6, .threads = 1});
+  EXPECT_EQ(calls, 4U);  // trials 4 and 5 never start
+  ASSERT_EQ(kept.size(), 3U);
+  for (std::size_t t = 0; t < 3; ++t) {
+    EXPECT_EQ(kept[t].choice, all[t].choice);
+    EXPECT_EQ(kept[t].scores.weight, all[t].scores.weight);
+  }
+  // A single trial returns what it found when stopped (here at once: its first iteration).
+  const auto one = run_trials(set, s, {.trials = 1, .threads = 1});
+  ASSERT_EQ(one.size(), 1U);
+  EXPECT_EQ(one[0].iterations, 1U);
+}
+
 TEST(Trials, Statistics) {
   const std::vector<double> v{1.0, 2.0, 4.0};
   const Statistics s = statistics(v);

@@ -41,6 +41,81 @@ TEST(ResultIo, RoundTrip) {
   EXPECT_EQ(r.weight.min, r.best.scores.weight);
 }
 
+TEST(ResultIo, TheSettingsThatDecideTheResultReadBack) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  OptimizeSettings s;
+  s.method = Method::hybrid_nlopt;
+  s.iterations = 20;
+  s.seed = 9;
+  s.aco.rho = 0.25;
+  s.aco.ants = 7;
+  s.aco.restarts = false;
+  s.refine.algorithm = RefineAlgorithm::slsqp;
+  s.refine.max_evaluations = 123;
+  s.refine.graduated = false;
+  s.ceres.max_iterations = 17;
+  s.threads = 2;
+  const auto trials = run_trials(set, s, {.trials = 1, .threads = 2});
+  StudyResult r = summarize("paper9.json", s, trials);
+  r.settings->islands = aco::IslandSettings{
+      .colonies = 4, .exchange_every = 9, .topology = aco::Topology::full, .first = 2};
+  std::ostringstream out;
+  write_result(out, r);
+  std::istringstream in(out.str());
+  const StudyResult back = read_result(in, "result.json");
+  ASSERT_TRUE(back.settings.has_value());
+  const OptimizeSettings& b = *back.settings;
+  EXPECT_EQ(b.method, Method::hybrid_nlopt);
+  EXPECT_EQ(b.seed, 9U);
+  EXPECT_EQ(b.iterations, 20U);
+  EXPECT_EQ(b.aco.rho, 0.25);
+  EXPECT_EQ(b.aco.ants, 7U);
+  EXPECT_FALSE(b.aco.restarts);
+  EXPECT_EQ(b.aco.p0, s.aco.p0);
+  EXPECT_EQ(b.refine.algorithm, RefineAlgorithm::slsqp);
+  EXPECT_EQ(b.refine.max_evaluations, 123);
+  EXPECT_FALSE(b.refine.graduated);
+  EXPECT_EQ(b.ceres.max_iterations, 17);
+  ASSERT_TRUE(b.islands.has_value());
+  EXPECT_EQ(b.islands->colonies, 4U);
+  EXPECT_EQ(b.islands->exchange_every, 9U);
+  EXPECT_EQ(b.islands->topology, aco::Topology::full);
+  EXPECT_EQ(out.str().find("\"threads\""), std::string::npos);  // not part of the result
+  std::string bad = out.str();
+  const std::string rho = "\"rho\":0.25";
+  bad.replace(bad.find(rho), rho.size(), "\"rho\":1.5");
+  std::istringstream bad_in(bad);
+  EXPECT_EQ(testing::error_of([&] { read_result(bad_in, "r.json"); }),
+            "r.json: settings: optimize: aco: rho must be in [0, 1] (0: the variant's default)");
+}
+
+TEST(ResultIo, AnInterruptedStudySaysSoAndReadsBack) {
+  const FragmentSet set = synthesize(synth_preset("paper9"));
+  OptimizeSettings s;
+  s.iterations = 30;
+  const auto trials = run_trials(set, s, {.trials = 2, .threads = 1});
+  StudyResult r = summarize("paper9.json", s, trials);
+  std::ostringstream complete;
+  write_result(complete, r);
+  EXPECT_EQ(complete.str().find("interrupted"), std::string::npos);
+  r.interrupted = StudyInterruption{"SIGTERM", 10};
+  std::ostringstream out;
+  write_result(out, r);
+  EXPECT_NE(out.str().find("\"interrupted\": true"), std::string::npos);
+  std::istringstream in(out.str());
+  const StudyResult back = read_result(in, "result.json");
+  ASSERT_TRUE(back.interrupted.has_value());
+  EXPECT_EQ(back.interrupted->signal, "SIGTERM");
+  EXPECT_EQ(back.interrupted->trials_requested, 10U);
+  EXPECT_EQ(back.trials, 2U);
+  std::string fewer = out.str();
+  const std::string ten = "\"trials_requested\": 10";
+  fewer.replace(fewer.find(ten), ten.size(), "\"trials_requested\": 1");
+  std::istringstream bad(fewer);
+  EXPECT_EQ(testing::error_of([&] { read_result(bad, "r.json"); }),
+            "r.json: trials_requested: must be >= trials");
+}
+
 TEST(ResultIo, RejectsBadFiles) {
   const auto error_of = [](const std::string& text) {
     return testing::error_of([&] {

@@ -19,7 +19,8 @@
 namespace antslam::slam {
 
 inline constexpr const char* kResultFormat = "antslam-optimize-result";
-inline constexpr int kResultVersion = 2;  ///< 1 also held the times; it is still read
+inline constexpr int kResultVersion = 3;  ///< 3 added the settings; 1 also held the times
+                                          ///< (every version is still read)
 inline constexpr const char* kTimesFormat = "antslam-optimize-times";
 
 /// The best trial's frames against a reference (computed by the caller, e.g. with antslam::eval:
@@ -31,17 +32,27 @@ struct TrajectoryError {
   std::size_t poses = 0;  ///< poses compared
 };
 
+/// A study stopped early (Ctrl-C): its result holds the trials finished before the stop.
+struct StudyInterruption {
+  std::string signal;                ///< "SIGINT", "SIGTERM" or "SIGHUP"
+  std::size_t trials_requested = 0;  ///< the study asked for this many (count)
+};
+
 struct StudyResult {
-  std::string fragment_set;              ///< what was optimised (file or name)
-  Method method = Method::hybrid;        ///< how
-  std::uint64_t seed = 1;                ///< study seed (trial t: trial_seed(seed, t))
-  std::size_t trials = 0;                ///< number of trials
-  Statistics weight;                     ///< eq. (10) over the trials
-  Statistics chi2;                       ///< least-squares cost over the trials
-  Statistics elapsed_s;                  ///< wall-clock seconds per trial (not in the file)
-  std::size_t best_trial = 0;            ///< trial with the lowest weight (first on ties)
-  OptimizeResult best;                   ///< that trial's result (convergence not stored)
-  std::optional<TrajectoryError> error;  ///< best trial's frames vs the reference, if known
+  std::string fragment_set;                      ///< what was optimised (file or name)
+  Method method = Method::hybrid;                ///< how
+  std::uint64_t seed = 1;                        ///< study seed (trial t: trial_seed(seed, t))
+  std::size_t trials = 0;                        ///< number of trials
+  Statistics weight;                             ///< eq. (10) over the trials
+  Statistics chi2;                               ///< least-squares cost over the trials
+  Statistics elapsed_s;                          ///< wall-clock seconds per trial (not in the file)
+  std::size_t best_trial = 0;                    ///< trial with the lowest weight (first on ties)
+  OptimizeResult best;                           ///< that trial's result (convergence not stored)
+  std::optional<TrajectoryError> error;          ///< best trial's frames vs the reference, if known
+  std::optional<StudyInterruption> interrupted;  ///< set when the study was stopped early
+  /// The settings every trial ran with, those that decide its result (not threads, backend,
+  /// the stop or the islands' exchange); from summarize, or read from a version 3 file.
+  std::optional<OptimizeSettings> settings;
 };
 
 /// Statistics of the trials and the best one (no trajectory error: the caller adds it).

@@ -35,7 +35,10 @@ struct TrialSettings {
 using TrialRunner =
     std::function<OptimizeResult(const OptimizeSettings& settings, const OptimizeObserver&)>;
 
-/// Runs trials.trials trials of `run` as run_trials below does for a fragment set.
+/// Runs trials.trials trials of `run` as run_trials below does for a fragment set. Once
+/// settings.stop is requested, several trials end with the longest run of trials (in the order
+/// asked) that had finished before it: a trial it cut short, and every trial after one, is left
+/// out, so that result k is still trial k. A single trial returns what it found when stopped.
 std::vector<OptimizeResult> run_trials(const TrialRunner& run, const OptimizeSettings& settings,
                                        const TrialSettings& trials,
                                        const TrialsObserver& observer = {},
