@@ -4,6 +4,11 @@
 // stdout is kept (printed by rank 0 in job order, or written to --log-dir). A failing job ends
 // the rank's share (with --keep-going the rank goes on); once every rank has finished, the run
 // fails with one line naming the job's line (and the rank).
+// With --log-dir, each job's files are written as soon as it ends, with a mark that it finished
+// (line-<line>.done: its command line); --resume skips the jobs marked finished with the same
+// command line, so that a batch stopped by Ctrl-C, a wall-time limit or a crash goes on where it
+// stopped. On one process, Ctrl-C stops the job under way as that command does (a tsp run keeps
+// its best tour, marked partial; it is not marked finished) and no further job starts.
 
 #include <CLI/CLI.hpp>
 
@@ -22,6 +27,7 @@
 #include "antslam/dist/farm.hpp"
 #include "antslam/dist/outcome.hpp"
 #include "antslam/io/errors.hpp"
+#include "antslam/io/interrupts.hpp"
 #include "antslam/io/output_files.hpp"
 #include "commands.hpp"
 
@@ -33,12 +39,14 @@ struct BatchOptions {
   std::string jobs;
   std::string log_dir;
   bool keep_going = false;
+  bool resume = false;
 };
 
 /// What a job left: its stdout, and how it ended (its failure names the jobs file and line).
 struct JobLog {
   std::string out;
   dist::Outcome outcome;
+  bool skipped = false;  ///< --resume: finished by an earlier batch, not run
 };
 
 /// One line of the jobs file: an antslam command line, split at whitespace.
@@ -142,6 +150,8 @@ JobLog run_job(const Job& job, const std::string& jobs_file, bool keep_going) {
               }
             }),
             {}};
+  } catch (const io::Interrupted&) {
+    throw;  // the batch stops (run below)
   } catch (...) {
     io::Failure failure = io::failure_of(std::current_exception());
     failure.message = jobs_file + ":" + std::to_string(job.line) + ": " + failure.message;
@@ -154,48 +164,96 @@ std::filesystem::path log_path(const BatchOptions& o, const Job& job, const char
   return std::filesystem::path(o.log_dir) / ("line-" + std::to_string(job.line) + extension);
 }
 
+/// The files a job leaves in --log-dir, written together by the process that ran it as soon as
+/// it ends: its stdout (.out), and either its error line (.err, a failed job with --keep-going)
+/// or the mark that it finished (.done: its command line); a stale .err or .done is removed.
+void write_job_logs(const BatchOptions& o, const Job& job, const JobLog& log) {
+  io::OutputFiles files(true);
+  const std::filesystem::path out = files.add(log_path(o, job, ".out"));
+  const std::filesystem::path err = files.add(log_path(o, job, ".err"));
+  const std::filesystem::path done = files.add(log_path(o, job, ".done"));
+  files.write(out, log.out);
+  if (log.outcome.failed)
+    files.write(err, "antslam: error: " + log.outcome.message + "\n");
+  else
+    files.write(done, job.text() + "\n");
+  files.commit();
+}
+
+/// --resume: whether an earlier batch marked the job finished with the same command line.
+bool finished_before(const BatchOptions& o, const Job& job) {
+  std::ifstream in(log_path(o, job, ".done"));
+  std::string line;
+  return in && std::getline(in, line) && line == job.text();
+}
+
 void run(const BatchOptions& o) {
+  if (o.resume && o.log_dir.empty())
+    throw io::UsageError("--resume needs --log-dir (where the finished jobs are marked)");
   const std::vector<Job> jobs = read_jobs(o.jobs);
-  io::OutputFiles outputs;
-  if (!o.log_dir.empty())
-    for (const Job& job : jobs) {
-      outputs.add(log_path(o, job, ".out"));
-      if (o.keep_going) outputs.add(log_path(o, job, ".err"));
-    }
+  if (!o.log_dir.empty()) {  // every log file can be written, checked before the first job
+    io::OutputFiles check(false);
+    for (const Job& job : jobs)
+      for (const char* extension : {".out", ".err", ".done"})
+        check.add(log_path(o, job, extension));
+  }
   dist::Communicator& world = dist::command_world();
-  const std::vector<JobLog> logs = dist::farm<JobLog>(
-      world, jobs.size(),
-      [&](std::span<const std::size_t> share) {
-        std::vector<JobLog> out;
-        for (const std::size_t j : share) out.push_back(run_job(jobs[j], o.jobs, o.keep_going));
-        return out;
-      },
-      [](dist::ByteWriter& out, const JobLog& log) {
-        out.text(log.out);
-        dist::write(out, log.outcome);
-      },
-      [](dist::ByteReader& in) {
-        JobLog log{in.text(), {}};
-        log.outcome = dist::read_outcome(in);
-        return log;
-      });
+  std::size_t finished = 0;  // on this process, for the interrupted line
+  const Job* under_way = nullptr;
+  const std::vector<JobLog> logs = [&] {
+    try {
+      return dist::farm<JobLog>(
+          world, jobs.size(),
+          [&](std::span<const std::size_t> share) {
+            std::vector<JobLog> out;
+            for (const std::size_t j : share) {
+              if (o.resume && finished_before(o, jobs[j])) {
+                out.push_back({{}, {}, true});
+                continue;
+              }
+              under_way = &jobs[j];
+              if (!o.log_dir.empty())  // no longer finished, until it finishes again
+                std::filesystem::remove(log_path(o, jobs[j], ".done"));
+              out.push_back(run_job(jobs[j], o.jobs, o.keep_going));
+              if (!o.log_dir.empty()) write_job_logs(o, jobs[j], out.back());
+              ++finished;
+            }
+            return out;
+          },
+          [](dist::ByteWriter& out, const JobLog& log) {
+            out.text(log.out);
+            dist::write(out, log.outcome);
+            out.value(static_cast<std::uint8_t>(log.skipped));
+          },
+          [](dist::ByteReader& in) {
+            JobLog log{in.text(), {}};
+            log.outcome = dist::read_outcome(in);
+            log.skipped = in.value<std::uint8_t>() != 0;
+            return log;
+          });
+    } catch (const io::Interrupted& e) {  // one process: the job under way kept what it could
+      throw io::Interrupted(
+          e.signal(), std::to_string(finished) + " of " + std::to_string(jobs.size()) +
+                          " jobs finished; " + o.jobs + ":" + std::to_string(under_way->line) +
+                          " stopped and " + e.kept() +
+                          (o.log_dir.empty() ? std::string() : "; --resume runs the others"));
+    }
+  }();
   std::vector<std::size_t> failed;
-  for (std::size_t j = 0; j < jobs.size(); ++j)
+  std::size_t skipped = 0;
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
     if (logs[j].outcome.failed) failed.push_back(j);
+    if (logs[j].skipped) ++skipped;
+  }
   if (o.log_dir.empty()) {
     for (std::size_t j = 0; j < jobs.size(); ++j)
       std::printf("== %s:%zu: %s\n%s", o.jobs.c_str(), jobs[j].line, jobs[j].text().c_str(),
                   logs[j].out.c_str());
   } else {
-    for (std::size_t j = 0; j < jobs.size(); ++j) {
-      outputs.write(log_path(o, jobs[j], ".out"), logs[j].out);
-      if (logs[j].outcome.failed)
-        outputs.write(log_path(o, jobs[j], ".err"),
-                      "antslam: error: " + logs[j].outcome.message + "\n");
-    }
-    outputs.commit();
-    std::printf("%zu jobs done; their output in %s/line-<line>.out\n", jobs.size(),
-                o.log_dir.c_str());
+    const std::string before =
+        skipped == 0 ? "" : " (" + std::to_string(skipped) + " finished before, skipped)";
+    std::printf("%zu jobs done%s; their output in %s/line-<line>.out\n", jobs.size(),
+                before.c_str(), o.log_dir.c_str());
   }
   if (failed.empty()) return;
   // --keep-going: every rank holds every job's outcome, so every rank stops here alike, naming
@@ -220,6 +278,9 @@ void add_batch_command(CLI::App& app) {
   cmd->add_option("--log-dir", o->log_dir,
                   "write each job's stdout to DIR/line-<line>.out instead of printing them all "
                   "in job order");
+  cmd->add_flag("--resume", o->resume,
+                "skip the jobs an earlier batch finished (DIR/line-<line>.done holds the same "
+                "command line); needs --log-dir");
   cmd->add_flag("--keep-going", o->keep_going,
                 "run every job even after a failure (with --log-dir, a failed job's error line "
                 "goes to DIR/line-<line>.err); the batch still fails, naming the first failed "

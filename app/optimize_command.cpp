@@ -30,6 +30,7 @@
 #include "antslam/slamgraph/result_io.hpp"
 #include "antslam/slamgraph/study_input.hpp"
 #include "antslam/slamgraph/trials.hpp"
+#include "command_interrupts.hpp"
 #include "commands.hpp"
 #include "island_options.hpp"
 #include "optimizer_options.hpp"
@@ -123,6 +124,9 @@ void print_summary(const slam::StudyResult& r, const slam::StudyInput& input,
 }
 
 void run(const OptimizeOptions& options) {
+  // An interrupt stops the study, which keeps its finished trials (one trial: what it found).
+  // (Armed first: one during the set-up stops the work after its first iteration.)
+  const CommandInterrupts interrupts;
   OptimizeOptions o = options;
   o.s = optimize_settings(o.optimizer);
   dist::Communicator& world = dist::command_world();
@@ -150,15 +154,9 @@ void run(const OptimizeOptions& options) {
   slam::read_study_reference(input, o.reference);
   io::require_memory("--trials " + std::to_string(o.trials) + " (the trials' results)",
                      static_cast<double>(o.trials) * slam::trial_result_bytes(input.poses()));
-  // One process: an interrupt stops the study, which keeps its finished trials (one trial: what
-  // it found). Under MPI the launcher ends the ranks itself; they keep today's behaviour.
-  std::optional<io::StopOnInterrupt> stop_on_interrupt;
-  if (world.size() == 1) {
-    stop_on_interrupt.emplace();
-    o.s.stop = stop_on_interrupt->token();
-  }
+  o.s.stop = interrupts.token();
   const std::vector<slam::OptimizeResult> trials = run_study(input, o);
-  const int interrupt_signal = stop_on_interrupt ? stop_on_interrupt->signal() : 0;
+  const int interrupt_signal = interrupts.signal();
   if (interrupt_signal != 0 && trials.empty())
     throw io::Interrupted(interrupt_signal, "no trial had finished; nothing written");
   slam::StudyResult r = slam::summarize(o.input, o.s, trials);

@@ -26,6 +26,7 @@
 #include "antslam/tsp/optima.hpp"
 #include "antslam/tsp/run_io.hpp"
 #include "antslam/tsp/tsplib.hpp"
+#include "command_interrupts.hpp"
 #include "commands.hpp"
 #include "island_options.hpp"
 #include "tsp_options.hpp"
@@ -141,6 +142,9 @@ std::string kept_text(const TspCommand& c, const aco::RunResult& result, double 
 }
 
 void run(const TspCommand& c) {
+  // An interrupt stops the run at the end of an iteration and the outputs keep what it found.
+  // (Armed first: one during the set-up stops the work after its first iteration.)
+  const CommandInterrupts interrupts;
   dist::Communicator& world = dist::command_world();
   const std::optional<aco::IslandSettings> islands = island_settings(c.islands, world, "tsp");
   const bool root = world.is_root();  // under MPI, rank 0 alone prints and writes
@@ -169,13 +173,7 @@ void run(const TspCommand& c) {
   }
   if (c.stop_at_optimum && optimum) termination.target_cost = *optimum;
 
-  // One process: an interrupt stops the run at the end of an iteration and the outputs keep
-  // what it found. Under MPI the launcher ends the ranks itself; they keep today's behaviour.
-  std::optional<io::StopOnInterrupt> stop_on_interrupt;
-  if (world.size() == 1) {
-    stop_on_interrupt.emplace();
-    termination.stop = stop_on_interrupt->token();
-  }
+  termination.stop = interrupts.token();
 
   io::Progress progress(!c.quiet && root && io::stderr_is_terminal());
   std::vector<aco::IterationReport> trace;
@@ -197,7 +195,7 @@ void run(const TspCommand& c) {
   const aco::RunResult result =
       island ? island->run : tsp::solve(problem, settings, termination, observer);
   progress.clear();
-  const int interrupt_signal = stop_on_interrupt ? stop_on_interrupt->signal() : 0;
+  const int interrupt_signal = interrupts.signal();
   const double setup_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - command_start).count() -
       result.elapsed_s;

@@ -22,6 +22,7 @@
 #include "antslam/io/progress.hpp"
 #include "antslam/tsp/experiment.hpp"
 #include "antslam/tsp/tsplib.hpp"
+#include "command_interrupts.hpp"
 #include "commands.hpp"
 #include "tsp_options.hpp"
 #include "validators.hpp"
@@ -47,6 +48,9 @@ struct ExperimentCommand {
 };
 
 void run(const ExperimentCommand& c) {
+  // An interrupt ends the run under way and keeps the finished ones.
+  // (Armed first: one during the set-up stops the work after its first iteration.)
+  const CommandInterrupts interrupts;
   tsp::ExperimentSettings e;
   for (const std::string& name : c.instances)
     e.instances.push_back(tsp::resolve_instance(name, c.data_dir));
@@ -74,13 +78,7 @@ void run(const ExperimentCommand& c) {
   if (!c.csv_out.empty()) outputs.add(c.csv_out);
   if (!c.markdown_out.empty()) outputs.add(c.markdown_out);
 
-  // One process: an interrupt ends the run under way and keeps the finished ones. Under MPI the
-  // launcher ends the ranks itself; they keep today's behaviour.
-  std::optional<io::StopOnInterrupt> stop_on_interrupt;
-  if (dist::command_world().size() == 1) {
-    stop_on_interrupt.emplace();
-    e.termination.stop = stop_on_interrupt->token();
-  }
+  e.termination.stop = interrupts.token();
 
   io::Progress progress;
   const auto run_share = [&](std::span<const std::size_t> share) {
@@ -102,7 +100,7 @@ void run(const ExperimentCommand& c) {
       [](dist::ByteWriter& out, const tsp::ExperimentRun& r) { write(out, r); },
       dist::read_experiment_run);
   progress.clear();
-  const int interrupt_signal = stop_on_interrupt ? stop_on_interrupt->signal() : 0;
+  const int interrupt_signal = interrupts.signal();
   const std::string interruption =  // what an interrupted experiment's outputs say
       interrupt_signal == 0
           ? ""

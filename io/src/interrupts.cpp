@@ -154,6 +154,7 @@ std::string signal_name(int signal) {
 
 Interrupted::Interrupted(int signal, const std::string& kept)
     : std::runtime_error("interrupted (" + std::string(strsignal(signal)) + "); " + kept),
-      signal_(signal) {}
+      signal_(signal),
+      kept_(kept) {}
 
 }  // namespace antslam::io

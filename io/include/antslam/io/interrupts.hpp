@@ -62,9 +62,12 @@ class Interrupted : public std::runtime_error {
  public:
   Interrupted(int signal, const std::string& kept);
   int signal() const { return signal_; }
+  /// What was kept (the line without its "interrupted (...); " start).
+  const std::string& kept() const { return kept_; }
 
  private:
   int signal_;
+  std::string kept_;
 };
 
 }  // namespace antslam::io
