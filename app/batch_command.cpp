@@ -198,7 +198,7 @@ void run(const BatchOptions& o) {
         check.add(log_path(o, job, extension));
   }
   dist::Communicator& world = dist::command_world();
-  std::size_t finished = 0;  // on this process, for the interrupted line
+  std::size_t finished = 0;  // on this process, now or before (--resume): for the interrupted line
   const Job* under_way = nullptr;
   const std::vector<JobLog> logs = [&] {
     try {
@@ -209,6 +209,7 @@ void run(const BatchOptions& o) {
             for (const std::size_t j : share) {
               if (o.resume && finished_before(o, jobs[j])) {
                 out.push_back({{}, {}, true});
+                ++finished;
                 continue;
               }
               under_way = &jobs[j];
