@@ -51,7 +51,7 @@ std::optional<aco::IslandSettings> island_settings(const IslandOptions& o,
   aco::IslandSettings s;
   s.colonies = o.colonies;
   s.exchange_every = o.exchange_every;
-  s.topology = o.topology == "full" ? aco::Topology::full : aco::Topology::ring;
+  s.topology = *aco::parse_topology(o.topology);  // checked by the option
   s.local = o.colonies / ranks;
   s.first = comm.rank() * s.local;
   return s;

@@ -198,7 +198,6 @@ void run(const OptimizeOptions& options) {
   if (!o.g2o_out.empty()) std::printf("wrote %s\n", o.g2o_out.c_str());
   if (!o.tum_out.empty()) std::printf("wrote %s\n", o.tum_out.c_str());
   if (r.interrupted) {
-    std::fflush(stdout);
     throw io::Interrupted(
         interrupt_signal,
         (o.trials == 1 ? std::string("kept the trial's best so far")

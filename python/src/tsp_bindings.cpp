@@ -43,12 +43,11 @@ aco::RunResult solve(const tsp::Instance& instance, const tsp::SolverSettings& s
                      std::size_t colonies, std::uint64_t exchange_every,
                      const std::string& topology) {
   aco::resolve(settings.backend, settings.threads);  // serial on several threads fails here
-  if (topology != "ring" && topology != "full") unknown_name("topology", topology, "ring, full");
+  const std::optional<aco::Topology> kind = aco::parse_topology(topology);
+  if (!kind) unknown_name("topology", topology, "ring, full");
   if (colonies == 0) throw std::invalid_argument("colonies: must be >= 1");
   const aco::IslandSettings islands{
-      .colonies = colonies,
-      .exchange_every = exchange_every,
-      .topology = topology == "full" ? aco::Topology::full : aco::Topology::ring};
+      .colonies = colonies, .exchange_every = exchange_every, .topology = *kind};
   return run_interruptible([&](PythonThread& python) {
     const tsp::TspProblem problem(instance, problem_settings);
     aco::Termination t = termination;

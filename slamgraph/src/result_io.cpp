@@ -177,12 +177,11 @@ OptimizeSettings read_settings(const JsonField& f, const StudyResult& study) {
   if (!f.at("islands").json().is_null()) {
     const JsonField i = f.at("islands");
     i.only({"colonies", "exchange_every", "topology"});
-    aco::IslandSettings islands{.colonies = i.at("colonies").integer(),
-                                .exchange_every = i.at("exchange_every").integer()};
-    const std::string topology = i.at("topology").string();
-    if (topology != "ring" && topology != "full") i.at("topology").fail("expected ring or full");
-    islands.topology = topology == "full" ? aco::Topology::full : aco::Topology::ring;
-    s.islands = islands;
+    const std::optional<aco::Topology> topology = aco::parse_topology(i.at("topology").string());
+    if (!topology) i.at("topology").fail("expected ring or full");
+    s.islands = aco::IslandSettings{.colonies = i.at("colonies").integer(),
+                                    .exchange_every = i.at("exchange_every").integer(),
+                                    .topology = *topology};
   }
   try {
     validate(s);

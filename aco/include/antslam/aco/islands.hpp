@@ -42,6 +42,13 @@ enum class Topology { ring, full };
 
 constexpr std::string_view to_string(Topology t) { return t == Topology::ring ? "ring" : "full"; }
 
+/// The topology a name (to_string's) stands for; none for another name.
+constexpr std::optional<Topology> parse_topology(std::string_view name) {
+  for (const Topology t : {Topology::ring, Topology::full})
+    if (to_string(t) == name) return t;
+  return std::nullopt;
+}
+
 struct IslandSettings {
   std::size_t colonies = 1;           ///< K
   std::uint64_t exchange_every = 25;  ///< E: iterations between exchanges
