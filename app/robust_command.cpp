@@ -76,7 +76,7 @@ void run(RobustOptions o) {
   // Everything is read and checked before anything is computed.
   const slam::PoseGraph graph = slam::read_g2o_file(o.input);
   const slam::ChainSplit split =
-      io::in_context_of(o.input, [&] { return slam::split_chain(graph, o.input); });
+      io::in_context_of(o.input, [&] { return slam::split_sessions(graph, o.input); });
   const std::optional<std::vector<bool>> outlier =
       io::in_context_of(outliers_file(o), [&] { return outlier_flags(o, graph, split); });
   std::vector<std::vector<slam::Pose2>> reference_poses;

@@ -79,15 +79,19 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split,
   }
   prefix_.assign(pose.size(), Eigen::Matrix3d::Zero());
   for (std::size_t k = 0; k < split.chain.size(); ++k) {
+    prefix_[k + 1] = prefix_[k];
+    if (split.chain[k] == kNoStep) continue;  // the end of a session
     const Eigen::Matrix3d ad = adjoint(pose[k + 1]);
     const Eigen::Matrix3d sigma = oriented(graph.edges[split.chain[k]], k).covariance();
-    prefix_[k + 1] = prefix_[k] + ad * sigma * ad.transpose();
+    prefix_[k + 1] += ad * sigma * ad.transpose();
   }
   for (const std::size_t e : split.closures) {
     const PoseGraphEdge& edge = graph.edges[e];
     Closure c;
     c.lo = std::min(edge.from, edge.to);
     c.hi = std::max(edge.from, edge.to);
+    c.from_session = split.session_of(c.lo);
+    c.to_session = split.session_of(c.hi);
     const Gaussian2 z = oriented(edge, c.lo);
     const Pose2 y = pose[c.lo] * z.mean() * pose[c.hi].inverse();
     c.x = y.x;
@@ -101,7 +105,20 @@ CycleTest::CycleTest(const PoseGraph& graph, const ChainSplit& split,
   }
 }
 
+bool CycleTest::closes_cycle(std::size_t k, std::size_t l) const {
+  const Closure& a = closure_[k];
+  const Closure& b = closure_[l];
+  return a.from_session == b.from_session && a.to_session == b.to_session;
+}
+
+bool CycleTest::closes_cycle(std::size_t k) const {
+  return closure_[k].from_session == closure_[k].to_session;
+}
+
 Cycle CycleTest::cycle(std::size_t k, std::size_t l) const {
+  if (!closes_cycle(k, l))
+    throw std::invalid_argument("cycle: closures " + std::to_string(k) + " and " +
+                                std::to_string(l) + " close no cycle (other sessions)");
   const Closure* a = &closure_[k];
   const Closure* b = &closure_[l];
   if (b->lo < a->lo) std::swap(a, b);  // the same distance either way (Log(C^-1) = -Log(C))
@@ -115,10 +132,19 @@ Cycle CycleTest::cycle(std::size_t k, std::size_t l) const {
   };
   const Eigen::Matrix3d ad_c = adjoint(x, y, c, s);
   const Eigen::Matrix3d ad_a = adjoint(a->x, a->y, a->c, a->s);
-  const Eigen::Matrix3d between = ad_a - ad_c;
-  const std::size_t high_from = std::max(b->lo, std::min(a->hi, b->hi));
   Cycle result;
   result.residual = se2_log(x, y, theta, c, s);
+  if (a->from_session != a->to_session) {
+    // Two closures between sessions P and Q: Y estimates the transform between the sessions'
+    // frames; with P anchored at lo_A, P's steps lo_A..lo_B-1 reach C by Ad(C), Q's steps
+    // between the two hi ends (either order) by Ad(Y_A), and the closures by Ad(Y_A).
+    const std::size_t q_from = std::min(a->hi, b->hi), q_to = std::max(a->hi, b->hi);
+    result.covariance = ad_c * range(a->lo, b->lo) * ad_c.transpose() +
+                        ad_a * (range(q_from, q_to) + a->h + b->h) * ad_a.transpose();
+    return result;
+  }
+  const Eigen::Matrix3d between = ad_a - ad_c;
+  const std::size_t high_from = std::max(b->lo, std::min(a->hi, b->hi));
   result.covariance =
       ad_c * range(a->lo, std::min(b->lo, a->hi)) * ad_c.transpose() +
       between * range(a->hi, b->lo) * between.transpose() +
@@ -129,6 +155,9 @@ Cycle CycleTest::cycle(std::size_t k, std::size_t l) const {
 Cycle CycleTest::cycle(std::size_t k) const {
   // Y = Y^ Exp(Ad(X^_hi) n - xi_hi) with the chain anchored at lo: the covariance transported by
   // Ad(Y), which leaves the distance of Log(Y) unchanged (Ad(Y) Log(Y) = Log(Y)).
+  if (!closes_cycle(k))
+    throw std::invalid_argument("cycle: closure " + std::to_string(k) +
+                                " joins two sessions: it closes no cycle alone");
   const Closure& a = closure_[k];
   const Eigen::Matrix3d ad = adjoint(a.x, a.y, a.c, a.s);
   Cycle result;
@@ -145,10 +174,12 @@ double CycleTest::distance(const Cycle& cycle) const {
 }
 
 double CycleTest::squared_distance(std::size_t k, std::size_t l) const {
-  return distance(cycle(k, l));
+  return closes_cycle(k, l) ? distance(cycle(k, l)) : 0.0;
 }
 
-double CycleTest::squared_distance(std::size_t k) const { return distance(cycle(k)); }
+double CycleTest::squared_distance(std::size_t k) const {
+  return closes_cycle(k) ? distance(cycle(k)) : 0.0;
+}
 
 ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& split,
                                       const ConsistencySettings& settings) {

@@ -100,7 +100,22 @@ CeresResult optimize_pose_graph(const PoseGraph& graph, std::span<const Pose2> i
                                  new detail::RelativePoseError(edge.error)),
                              make_loss(losses[e]), poses[edge.lo].data(), poses[edge.hi].data());
   }
-  problem.SetParameterBlockConstant(poses[0].data());
+  // Every connected part of the graph the losses keep (sessions no kept edge joins) is held at
+  // its lowest vertex; a graph that chains every pose has one part, held at vertex 0.
+  std::vector<std::size_t> part(poses.size());
+  for (std::size_t v = 0; v < part.size(); ++v) part[v] = v;
+  const auto root = [&](std::size_t v) {
+    while (part[v] != v) v = part[v] = part[part[v]];
+    return v;
+  };
+  for (std::size_t e = 0; e < graph.edges.size(); ++e) {
+    if (losses[e].kind == EdgeLoss::Kind::weighted && losses[e].parameter == 0.0) continue;
+    const std::size_t a = root(graph.edges[e].from), b = root(graph.edges[e].to);
+    part[std::max(a, b)] = std::min(a, b);  // the lowest vertex stays the root
+  }
+  for (std::size_t v = 0; v < poses.size(); ++v)
+    if (root(v) == v && problem.HasParameterBlock(poses[v].data()))
+      problem.SetParameterBlockConstant(poses[v].data());
   return detail::solve(problem, poses, settings);
 }
 

@@ -103,7 +103,7 @@ RobustResult solve_robust(const PoseGraph& graph, RobustMethod method,
   const auto start = std::chrono::steady_clock::now();
   RobustResult result;
   result.method = method;
-  result.split = split_chain(graph, source);
+  result.split = split_sessions(graph, source);
   const std::vector<Pose2> initial = odometry_start(graph, result.split);
   const double c2 = chi_square3_quantile(settings.inlier_confidence);
   switch (method) {

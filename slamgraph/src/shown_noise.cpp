@@ -62,7 +62,8 @@ std::vector<std::pair<std::size_t, std::size_t>> short_pairs(const PoseGraph& gr
     const std::size_t first = i > settings.window ? i - settings.window : 0;
     const std::size_t last = std::min(m, i + settings.window + 1);
     for (std::size_t j = first; j < last; ++j)
-      if (j != i) candidates.emplace_back(test.cycle(order[i], order[j]).covariance(2, 2), j);
+      if (j != i && test.closes_cycle(order[i], order[j]))  // (other sessions: no cycle)
+        candidates.emplace_back(test.cycle(order[i], order[j]).covariance(2, 2), j);
     const std::size_t keep = std::min(settings.partners, candidates.size());
     std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(keep),
                       candidates.end());

@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,6 +49,31 @@ TEST(Chain, SplitsOdometryFromClosuresInEitherDirection) {
   g.edges.erase(g.edges.begin() + 4);
   EXPECT_EQ(testing::error_of([&] { split_chain(g, "g.g2o"); }),
             "g.g2o: no edge between vertices 2 and 3 (the graph must chain consecutive poses)");
+}
+
+TEST(Chain, SplitsAMultiSessionGraphIntoItsSessions) {
+  PoseGraph g;  // sessions 0-2 and 3-5; vertex 3's estimate places the second one
+  g.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {5, 5, 1.0}, {9, 9, 9}, {9, 9, 9}};
+  const Eigen::Matrix3d c = Eigen::Matrix3d::Identity();
+  g.edges = {edge(0, 1, {1, 0, 0}, c),  edge(1, 2, {1, 0, 0}, c), edge(3, 4, {1, 0, 0}, c),
+             edge(5, 4, {-1, 0, 0}, c), edge(2, 4, {0, 1, 0}, c), edge(0, 2, {2, 0, 0}, c)};
+  EXPECT_EQ(testing::error_of([&] { split_chain(g, "g.g2o"); }),
+            "g.g2o: no edge between vertices 2 and 3 (the graph must chain consecutive poses)");
+  const ChainSplit s = split_sessions(g, "g.g2o");
+  EXPECT_EQ(s.first, (std::vector<std::size_t>{0, 3}));
+  EXPECT_EQ(s.chain, (std::vector<std::size_t>{0, 1, kNoStep, 2, 3}));
+  EXPECT_EQ(s.closures, (std::vector<std::size_t>{4, 5}));  // between and within sessions
+  const std::size_t sessions[] = {0, 0, 0, 1, 1, 1};
+  for (std::size_t v = 0; v < 6; ++v) EXPECT_EQ(s.session_of(v), sessions[v]) << v;
+  const std::vector<Pose2> poses = chain_poses(g, s);
+  EXPECT_NEAR(poses[2].x, 2.0, 1e-12);
+  EXPECT_NEAR(poses[3].x, 5.0, 1e-12);                        // the file's estimate
+  EXPECT_NEAR(poses[5].x, 5.0 + 2.0 * std::cos(1.0), 1e-12);  // then the session's odometry
+  EXPECT_NEAR(poses[5].y, 5.0 + 2.0 * std::sin(1.0), 1e-12);
+  g.vertices.push_back({0, 0, 0});  // vertex 6: no odometry reaches it
+  EXPECT_EQ(testing::error_of([&] { split_sessions(g, "g.g2o"); }),
+            "g.g2o: vertex 6 has no edge to the vertex before or after it (a session of one "
+            "pose)");
 }
 
 /// A straight chain of unit steps along x with isotropic translation variance sigma2 and a
@@ -212,6 +238,63 @@ TEST(Consistency, MatchesTheCycleComposedStepByStepWhereTheOdometryDrifted) {
                                         : brute_force_cycle(t.graph, split, l, k);
         EXPECT_NEAR(mahalanobis(test.cycle(k, l)), expected, 1e-4 * expected)
             << "closures " << k << " and " << l << ", seed " << seed;
+      }
+    }
+  }
+}
+
+TEST(Consistency, BetweenSessionsMatchesTheCycleComposedStepByStep) {
+  // The drifted laps cut in two (the odometry edge after vertex 20 removed): closures across the
+  // cut join the sessions; two of them close a cycle through both sessions' odometry, a pair of
+  // other kinds none.
+  for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+    testing::TrueGraph t = testing::square_laps(3, 6, 3, 0.002, seed);
+    for (PoseGraphEdge& e : t.graph.edges)
+      if (is_odometry(e)) e.measurement = e.measurement * Pose2{0.0, 0.0, 0.08};
+    std::erase_if(t.graph.edges, [](const PoseGraphEdge& e) {
+      return std::min(e.from, e.to) == 20 && std::max(e.from, e.to) == 21;
+    });
+    const ChainSplit split = split_sessions(t.graph, "cut");
+    ASSERT_EQ(split.first, (std::vector<std::size_t>{0, 21}));
+    const CycleTest test(t.graph, split);
+    std::size_t between = 0, within = 0, none = 0;
+    for (std::size_t k = 0; k < test.closures(); ++k)
+      for (std::size_t l = 0; l < test.closures(); ++l) {
+        if (l == k) continue;
+        const auto [k_lo, k_hi] = span_of(t.graph, split, k);
+        const auto [l_lo, l_hi] = span_of(t.graph, split, l);
+        const bool k_across = k_lo <= 20 && k_hi >= 21, l_across = l_lo <= 20 && l_hi >= 21;
+        const bool same_session = !k_across && !l_across && (k_hi <= 20) == (l_hi <= 20);
+        if (!(k_across && l_across) && !same_session) {
+          EXPECT_FALSE(test.closes_cycle(k, l));
+          EXPECT_EQ(test.squared_distance(k, l), 0.0);
+          EXPECT_THROW(test.cycle(k, l), std::invalid_argument);
+          ++none;
+          continue;
+        }
+        ASSERT_TRUE(test.closes_cycle(k, l)) << k << " " << l;
+        ++(k_across ? between : within);
+        const double expected = k_lo <= l_lo ? brute_force_cycle(t.graph, split, k, l)
+                                             : brute_force_cycle(t.graph, split, l, k);
+        EXPECT_NEAR(mahalanobis(test.cycle(k, l)), expected, 1e-4 * expected)
+            << "closures " << k << " and " << l << ", seed " << seed;
+      }
+    EXPECT_GE(between, 6U);
+    EXPECT_GE(within, 6U);
+    EXPECT_GE(none, 6U);
+    const ConsistencyGraph graph = pairwise_consistency(t.graph, split);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> pairs(graph.pairs.begin(), graph.pairs.end());
+    for (std::uint32_t k = 0; k < test.closures(); ++k)
+      for (std::uint32_t l = k + 1; l < test.closures(); ++l)
+        EXPECT_EQ(pairs.contains({k, l}), graph.odometry_consistent[k] &&
+                                              graph.odometry_consistent[l] &&
+                                              test.squared_distance(k, l) <= graph.threshold)
+            << k << " " << l;
+    for (std::size_t k = 0; k < test.closures(); ++k) {
+      const auto [lo, hi] = span_of(t.graph, split, k);
+      EXPECT_EQ(test.closes_cycle(k), !(lo <= 20 && hi >= 21));
+      if (!test.closes_cycle(k)) {
+        EXPECT_EQ(test.squared_distance(k), 0.0);
       }
     }
   }

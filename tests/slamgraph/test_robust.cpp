@@ -57,6 +57,34 @@ Spoiled spoiled(OutlierKind kind, std::uint64_t seed) {
   return s;
 }
 
+TEST(Robust, AMultiSessionGraphKeepsItsClosuresAndJoinsItsSessions) {
+  // Three laps cut in two after vertex 60 (the odometry edge removed); the second session's
+  // estimates in the file are off by (5 m, -3 m, 0.3 rad). The closures within each session and
+  // between them are all true: every method keeps them and the sessions end where they are.
+  testing::TrueGraph t = testing::square_laps(3, 10, 2, 0.1, 3, 0.3);
+  std::erase_if(t.graph.edges, [](const PoseGraphEdge& e) {
+    return std::min(e.from, e.to) == 60 && std::max(e.from, e.to) == 61;
+  });
+  for (std::size_t v = 61; v < t.graph.vertices.size(); ++v)
+    t.graph.vertices[v] = Pose2{5.0, -3.0, 0.3} * t.graph.vertices[v];
+  for (const RobustMethod method :
+       {RobustMethod::pcm_exact, RobustMethod::pcm_aco, RobustMethod::gnc}) {
+    const RobustResult r = solve_robust(t.graph, method, {}, "cut");
+    ASSERT_EQ(r.split.first, (std::vector<std::size_t>{0, 61}));
+    std::size_t between = 0;
+    for (std::size_t k = 0; k < r.accepted.size(); ++k) {
+      EXPECT_TRUE(r.accepted[k]) << to_string(method) << " closure " << k;
+      const PoseGraphEdge& e = t.graph.edges[r.split.closures[k]];
+      between += (std::min(e.from, e.to) <= 60 && std::max(e.from, e.to) >= 61) ? 1U : 0U;
+    }
+    EXPECT_GE(between, 10U);
+    double worst = 0.0;
+    for (std::size_t v = 0; v < t.truth.size(); ++v)
+      worst = std::max(worst, std::hypot(r.poses[v].x - t.truth[v].x, r.poses[v].y - t.truth[v].y));
+    EXPECT_LT(worst, 0.5) << to_string(method);
+  }
+}
+
 TEST(PoseGraphCeres, DcsAndWeightedLossesAsDocumented) {
   // One edge between two vertices and one odometry edge: losses only change the weighting, so
   // check the solution against the closed form of two weighted measurements of one pose.

@@ -86,22 +86,32 @@ class CycleTest {
  public:
   /// Of `settings`, the confidence and linear_heading_sd. Throws std::invalid_argument for a
   /// confidence outside (0, 1) or a linear_heading_sd that is not positive.
+  /// On a multi-session graph (split_sessions) closures within a session are tested as on one
+  /// chain; two closures between the same two sessions close a cycle through both sessions'
+  /// odometry (Mangelson et al. 2018); any other pair, and a closure between sessions alone,
+  /// closes none.
   CycleTest(const PoseGraph& graph, const ChainSplit& split,
             const ConsistencySettings& settings = {});
   std::size_t closures() const { return closure_.size(); }
-  /// The cycle of closures k and l.
+  /// Whether closures k and l close a cycle (with the odometry).
+  bool closes_cycle(std::size_t k, std::size_t l) const;
+  /// Whether closure k closes a cycle with the odometry (it joins a session to itself).
+  bool closes_cycle(std::size_t k) const;
+  /// The cycle of closures k and l; throws std::invalid_argument if they close none.
   Cycle cycle(std::size_t k, std::size_t l) const;
-  /// The cycle of closure k with the odometry between its ends (Y_k).
+  /// The cycle of closure k with the odometry between its ends (Y_k); throws
+  /// std::invalid_argument if it closes none.
   Cycle cycle(std::size_t k) const;
   /// The squared Mahalanobis distance of the cycle of closures k and l, or its heading-only
-  /// equivalent (above).
+  /// equivalent (above); 0 (consistent) if they close none.
   double squared_distance(std::size_t k, std::size_t l) const;
   /// The same for the cycle of closure k with the odometry between its ends.
   double squared_distance(std::size_t k) const;
 
  private:
   struct Closure {
-    std::size_t lo = 0, hi = 0;         // the chain steps lo..hi-1 lie between its ends
+    std::size_t lo = 0, hi = 0;                    // the chain steps lo..hi-1 lie between its ends
+    std::size_t from_session = 0, to_session = 0;  // the sessions of lo and hi
     double x = 0, y = 0, c = 1, s = 0;  // correction Y: translation, cos and sin of its angle
     double theta = 0;
     Eigen::Matrix3d h;  // Ad(X^_hi) Sigma Ad(X^_hi)^T
@@ -113,7 +123,8 @@ class CycleTest {
   double linear_heading_variance_ = 0.0;  // linear_heading_sd squared
 };
 
-/// Throws std::invalid_argument for a confidence outside (0, 1) or serial on several threads.
+/// Pairs that close no cycle (other sessions, CycleTest) are consistent. Throws
+/// std::invalid_argument for a confidence outside (0, 1) or serial on several threads.
 ConsistencyGraph pairwise_consistency(const PoseGraph& graph, const ChainSplit& split,
                                       const ConsistencySettings& settings = {});
 
