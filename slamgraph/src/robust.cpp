@@ -26,12 +26,14 @@ std::vector<EdgeLoss> edge_losses(const PoseGraph& graph, const ChainSplit& spli
   return losses;
 }
 
-void optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
-              const std::vector<EdgeLoss>& losses, const RobustSettings& settings,
-              RobustResult& result) {
+double optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
+                const std::vector<EdgeLoss>& losses, const RobustSettings& settings,
+                RobustResult& result) {
   const auto start = std::chrono::steady_clock::now();
-  result.poses = optimize_pose_graph(graph, initial, losses, settings.ceres).frames;
+  CeresResult solved = optimize_pose_graph(graph, initial, losses, settings.ceres);
+  result.poses = std::move(solved.frames);
   result.optimize_s += seconds_since(start);
+  return solved.final_cost;
 }
 
 std::vector<double> closure_chi2(const PoseGraph& graph, const ChainSplit& split,

@@ -22,9 +22,10 @@ std::vector<EdgeLoss> edge_losses(const PoseGraph& graph, const ChainSplit& spli
 
 /// Ceres from `initial` with the given losses; adds its time to result.optimize_s and stores
 /// the poses in result.poses.
-void optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
-              const std::vector<EdgeLoss>& losses, const RobustSettings& settings,
-              RobustResult& result);
+/// Ceres from `initial`: result.poses, its time added to result.optimize_s; returns its final cost.
+double optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
+                const std::vector<EdgeLoss>& losses, const RobustSettings& settings,
+                RobustResult& result);
 
 /// The squared residual r^T Omega r of every closure at `poses`, in split order.
 std::vector<double> closure_chi2(const PoseGraph& graph, const ChainSplit& split,

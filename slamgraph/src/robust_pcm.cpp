@@ -233,9 +233,20 @@ void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double 
     check_clique(graph, initial, c2, tests, settings, result);
     recalibrated_check(graph, initial, tests, c2, clique, settings, result);
   }
-  // From the odometry again: the check's solve can end in a wrong basin with right decisions.
-  optimize(graph, initial, edge_losses(graph, result.split, keep_only(result.accepted)), settings,
-           result);
+  // Least squares on the accepted closures from the odometry and, after the check, from the
+  // checked map: the check's solve can end in a wrong basin with right decisions, and under heavy
+  // rotation noise the odometry start can too. The lower cost wins.
+  const std::vector<EdgeLoss> accepted =
+      edge_losses(graph, result.split, keep_only(result.accepted));
+  if (!(settings.check_clique && m > 0)) {
+    optimize(graph, initial, accepted, settings, result);
+    return;
+  }
+  const std::vector<Pose2> checked = result.poses;
+  const double from_odometry = optimize(graph, initial, accepted, settings, result);
+  std::vector<Pose2> odometry_map = std::move(result.poses);
+  const double from_checked = optimize(graph, checked, accepted, settings, result);
+  if (!(from_checked < from_odometry)) result.poses = std::move(odometry_map);
 }
 
 }  // namespace antslam::slam::detail
