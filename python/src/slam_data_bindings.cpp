@@ -15,6 +15,7 @@
 #include "antslam/slamgraph/synth.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "pickling.hpp"
 #include "slam_types.hpp"
 
 namespace antslam::python {
@@ -83,6 +84,17 @@ void bind_fragment_set(py::module_& m) {
                                  [&](std::ostream& out) { slam::write_fragment_set(out, s); });
           },
           py::arg("path"), "Writes the set as fragment-set JSON (atomically)")
+      .def(py::pickle(
+          [](const slam::FragmentSet& s) {
+            return py::make_tuple(kPickleVersion, text_of([&](std::ostream& out) {
+                                    slam::write_fragment_set(out, s);
+                                  }));
+          },
+          [](const py::tuple& state) {
+            check_pickle_state(state, 2, "antslam.slam.FragmentSet");
+            std::istringstream in = text_in(state);
+            return slam::read_fragment_set(in, "pickled antslam.slam.FragmentSet");
+          }))
       .def("__repr__", [](const slam::FragmentSet& s) {
         return "<antslam.slam.FragmentSet '" + s.name + "': " + std::to_string(s.fragments.size()) +
                " fragments, " + std::to_string(s.closures.size()) + " closures>";
@@ -187,6 +199,20 @@ void bind_pose_graph(py::module_& m) {
                 path, [&](std::ostream& out) { slam::write_pose_graph(out, g.graph, path); });
           },
           py::arg("path"), "Writes g2o lines, or TORO lines for a .graph name (atomically)")
+      .def(py::pickle(
+          [](const NamedGraph& g) {
+            return py::make_tuple(
+                kPickleVersion, text_of([&](std::ostream& out) { slam::write_g2o(out, g.graph); }),
+                g.name, g.graph.vertices_from_file);
+          },
+          [](const py::tuple& state) {
+            check_pickle_state(state, 4, "antslam.slam.PoseGraph");
+            std::istringstream in = text_in(state);
+            NamedGraph g{slam::read_g2o(in, "pickled antslam.slam.PoseGraph"),
+                         state[2].cast<std::string>()};
+            g.graph.vertices_from_file = state[3].cast<bool>();
+            return g;
+          }))
       .def("__repr__", [](const NamedGraph& g) {
         return "<antslam.slam.PoseGraph '" + g.name +
                "': " + std::to_string(g.graph.vertices.size()) + " vertices, " +

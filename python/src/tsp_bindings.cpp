@@ -16,6 +16,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "engine.hpp"
+#include "pickling.hpp"
 
 namespace antslam::python {
 
@@ -122,6 +123,16 @@ void bind_tsp(py::module_& m) {
             io::write_atomically(path, [&](std::ostream& out) { tsp::write_instance(out, i); });
           },
           py::arg("path"), "Writes the instance as a TSPLIB file (atomically)")
+      .def(py::pickle(
+          [](const tsp::Instance& i) {
+            return py::make_tuple(kPickleVersion,
+                                  text_of([&](std::ostream& out) { tsp::write_instance(out, i); }));
+          },
+          [](const py::tuple& state) {
+            check_pickle_state(state, 2, "antslam.tsp.Instance");
+            std::istringstream in = text_in(state);
+            return tsp::parse_instance(in, "pickled antslam.tsp.Instance");
+          }))
       .def("__repr__", [](const tsp::Instance& i) {
         return "<antslam.tsp.Instance " + i.name() + ", " + std::to_string(i.size()) + " cities, " +
                std::string(tsp::to_string(i.type())) + ">";

@@ -413,3 +413,4 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
 
 }  // namespace
 }  // namespace antslam::slam
+
