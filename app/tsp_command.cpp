@@ -94,9 +94,9 @@ void print_summary(const TspCommand& c, const tsp::TspProblem& problem,
 /// and every output says it is partial (the tour's comment, a first comment line in the trace,
 /// "interrupted" and "interrupt_signal" in the JSON).
 void write_outputs(const TspCommand& c, io::OutputFiles& outputs, const tsp::TspProblem& problem,
-                   const tsp::SolverSettings& settings, const aco::RunResult& result, double length,
-                   std::optional<double> optimum, double setup_s,
-                   const std::vector<aco::IterationReport>& trace,
+                   const tsp::SolverSettings& settings, const aco::Termination& budget,
+                   const aco::RunResult& result, double length, std::optional<double> optimum,
+                   double setup_s, const std::vector<aco::IterationReport>& trace,
                    const std::optional<aco::IslandSettings>& islands,
                    const std::optional<aco::IslandResult>& island, int interrupt_signal) {
   const tsp::Instance& instance = problem.instance();
@@ -119,7 +119,7 @@ void write_outputs(const TspCommand& c, io::OutputFiles& outputs, const tsp::Tsp
     });
   if (!c.json_out.empty()) {
     nlohmann::json j =
-        tsp::run_json(problem, settings, result, length, optimum, setup_s, islands, island);
+        tsp::run_json(problem, settings, budget, result, length, optimum, setup_s, islands, island);
     j["interrupted"] = interrupt_signal != 0;
     if (interrupt_signal != 0) j["interrupt_signal"] = io::signal_name(interrupt_signal);
     outputs.write(c.json_out, io::json_text(j));
@@ -211,8 +211,8 @@ void run(const TspCommand& c) {
     print_summary(c, problem, settings, result, length, optimum, setup_s);
     if (island) print_islands(*islands, *island);
   }
-  write_outputs(c, outputs, problem, settings, result, length, optimum, setup_s, trace, islands,
-                island, interrupt_signal);
+  write_outputs(c, outputs, problem, settings, termination, result, length, optimum, setup_s, trace,
+                islands, island, interrupt_signal);
   if (interrupt_signal != 0) throw io::Interrupted(interrupt_signal, kept_text(c, result, length));
 }
 

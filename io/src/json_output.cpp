@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "antslam/version.hpp"
+
 namespace antslam::io {
 
 namespace {
@@ -22,7 +24,9 @@ void check_finite(const nlohmann::json& value, const std::string& path) {
 
 std::string json_text(const nlohmann::json& doc) {
   check_finite(doc, "");
-  return doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  nlohmann::json stamped = doc;
+  if (stamped.is_object()) stamped["antslam_version"] = kVersion;
+  return stamped.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace antslam::io

@@ -57,6 +57,10 @@ JsonField JsonField::item(std::size_t index) const {
 }
 
 void JsonField::only(std::initializer_list<const char*> allowed) const {
+  only(std::span<const char* const>(allowed.begin(), allowed.size()));
+}
+
+void JsonField::only(std::span<const char* const> allowed) const {
   if (!value_->is_object()) fail("expected an object");
   for (const auto& [key, unused] : value_->items()) {
     bool known = false;

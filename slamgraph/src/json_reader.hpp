@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -34,6 +35,7 @@ class JsonField {
   JsonField item(std::size_t index) const;
   /// Fails if the object has members other than `allowed`.
   void only(std::initializer_list<const char*> allowed) const;
+  void only(std::span<const char* const> allowed) const;
   /// Number of elements; fails unless an array (of `expected` elements if given).
   std::size_t array_size(std::size_t expected = 0) const;
 

@@ -6,8 +6,11 @@
 #include <limits>
 #include <ostream>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
+#include "antslam/aco/parameter_fields.hpp"
+#include "antslam/version.hpp"
 #include "json_reader.hpp"
 #include "json_writer.hpp"
 
@@ -76,25 +79,11 @@ void read_best(const JsonField& f, StudyResult& r) {
 json settings_json(const OptimizeSettings& s) {
   const aco::Parameters& p = s.aco;
   const RefineSettings& r = s.refine;
+  json aco;
+  aco::for_each_parameter(p, [&](const char* name, const auto& value) { aco[name] = value; });
   return {{"iterations", s.iterations},
           {"time_limit_s", s.time_limit_s},
-          {"aco",
-           {{"ants", p.ants},
-            {"alpha", p.alpha},
-            {"beta", p.beta},
-            {"rho", p.rho},
-            {"q0", p.q0},
-            {"xi", p.xi},
-            {"elite_weight", p.elite_weight},
-            {"rank_width", p.rank_width},
-            {"p_best", p.p_best},
-            {"restarts", p.restarts},
-            {"restart_stagnant", p.restart_stagnant},
-            {"p0", p.p0},
-            {"glob_best_freq", p.glob_best_freq},
-            {"tau_max", p.tau_max},
-            {"tau_init", p.tau_init},
-            {"hybrid_deposit", p.hybrid_deposit}}},
+          {"aco", aco},
           {"refine",
            {{"algorithm", std::string(to_string(r.algorithm))},
             {"bound_sigmas", r.bound_sigmas},
@@ -132,26 +121,19 @@ OptimizeSettings read_settings(const JsonField& f, const StudyResult& study) {
   s.iterations = f.at("iterations").integer();
   s.time_limit_s = f.at("time_limit_s").number();
   const JsonField a = f.at("aco");
-  a.only({"ants", "alpha", "beta", "rho", "q0", "xi", "elite_weight", "rank_width", "p_best",
-          "restarts", "restart_stagnant", "p0", "glob_best_freq", "tau_max", "tau_init",
-          "hybrid_deposit"});
-  aco::Parameters& p = s.aco;
-  p.ants = a.at("ants").integer();
-  p.alpha = a.at("alpha").number();
-  p.beta = a.at("beta").number();
-  p.rho = a.at("rho").number();
-  p.q0 = a.at("q0").number();
-  p.xi = a.at("xi").number();
-  p.elite_weight = a.at("elite_weight").number();
-  p.rank_width = a.at("rank_width").integer();
-  p.p_best = a.at("p_best").number();
-  p.restarts = a.at("restarts").boolean();
-  p.restart_stagnant = a.at("restart_stagnant").integer();
-  p.p0 = a.at("p0").number();
-  p.glob_best_freq = a.at("glob_best_freq").integer();
-  p.tau_max = a.at("tau_max").number();
-  p.tau_init = a.at("tau_init").number();
-  p.hybrid_deposit = a.at("hybrid_deposit").number();
+  std::vector<const char*> names;
+  aco::for_each_parameter(s.aco, [&](const char* name, const auto&) { names.push_back(name); });
+  a.only(names);
+  aco::for_each_parameter(s.aco, [&](const char* name, auto& value) {
+    using Field = std::remove_reference_t<decltype(value)>;
+    const JsonField field = a.at(name);
+    if constexpr (std::is_same_v<Field, bool>)
+      value = field.boolean();
+    else if constexpr (std::is_floating_point_v<Field>)
+      value = field.number();
+    else
+      value = static_cast<Field>(field.integer());
+  });
   const JsonField r = f.at("refine");
   r.only({"algorithm", "bound_sigmas", "max_evaluations", "relative_tolerance", "time_limit_s",
           "lbfgs_memory", "graduated", "graduation_factor"});
@@ -235,6 +217,7 @@ StudyResult summarize(const std::string& fragment_set, const OptimizeSettings& s
 void write_result(std::ostream& out, const StudyResult& r) {
   json doc = {{"format", kResultFormat},
               {"version", kResultVersion},
+              {"antslam_version", kVersion},
               {"fragment_set", r.fragment_set},
               {"method", std::string(to_string(r.method))},
               {"seed", r.seed},
@@ -261,9 +244,9 @@ StudyResult read_result(std::istream& in, const std::string& source) {
   const nlohmann::json doc = detail::parse_json(text, source);
   const JsonField root(doc, source, "");
   detail::check_header(root, kResultFormat, kResultVersion);
-  root.only({"format", "version", "fragment_set", "method", "seed", "trials", "weight", "chi2",
-             "elapsed_s", "best", "trajectory_error", "interrupted", "interrupt_signal",
-             "trials_requested", "settings"});
+  root.only({"format", "version", "antslam_version", "fragment_set", "method", "seed", "trials",
+             "weight", "chi2", "elapsed_s", "best", "trajectory_error", "interrupted",
+             "interrupt_signal", "trials_requested", "settings"});
   StudyResult r;
   r.fragment_set = root.at("fragment_set").string();
   try {

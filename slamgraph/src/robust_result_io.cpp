@@ -1,4 +1,5 @@
 #include "antslam/slamgraph/robust_result_io.hpp"
+#include "antslam/version.hpp"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -47,6 +48,7 @@ void write_robust_result(std::ostream& out, const PoseGraph& graph, const Robust
                          const RobustRunInputs& inputs) {
   ordered_json j = {{"format", kRobustResultFormat},
                     {"version", kRobustResultVersion},
+                    {"antslam_version", kVersion},
                     {"input", inputs.graph},
                     {"method", to_string(r.method)},
                     {"vertices", graph.vertices.size()},

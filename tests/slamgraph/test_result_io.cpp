@@ -6,8 +6,10 @@
 #include <sstream>
 #include <string>
 
+#include "antslam/aco/parameter_fields.hpp"
 #include "antslam/slamgraph/result_io.hpp"
 #include "antslam/slamgraph/synth.hpp"
+#include "antslam/version.hpp"
 #include "support.hpp"
 
 namespace antslam::slam {
@@ -50,6 +52,18 @@ TEST(ResultIo, TheSettingsThatDecideTheResultReadBack) {
   s.aco.rho = 0.25;
   s.aco.ants = 7;
   s.aco.restarts = false;
+  s.aco.alpha = 1.25;
+  s.aco.beta = 3.0;
+  s.aco.q0 = 0.7;
+  s.aco.xi = 0.2;
+  s.aco.elite_weight = 3.0;
+  s.aco.rank_width = 4;
+  s.aco.p_best = 0.1;
+  s.aco.restart_stagnant = 11;
+  s.aco.glob_best_freq = 7;
+  s.aco.tau_max = 123.5;
+  s.aco.tau_init = 50.0;
+  s.aco.hybrid_deposit = 2.5;
   s.refine.algorithm = RefineAlgorithm::slsqp;
   s.refine.max_evaluations = 123;
   s.refine.graduated = false;
@@ -72,6 +86,14 @@ TEST(ResultIo, TheSettingsThatDecideTheResultReadBack) {
   EXPECT_EQ(b.aco.ants, 7U);
   EXPECT_FALSE(b.aco.restarts);
   EXPECT_EQ(b.aco.p0, s.aco.p0);
+  const auto numbers = [](const aco::Parameters& p) {
+    std::vector<double> v;
+    aco::for_each_parameter(p, [&](const char*, const auto& x) { v.push_back(double(x)); });
+    return v;
+  };
+  EXPECT_EQ(numbers(b.aco), numbers(s.aco));  // every engine parameter, as written
+  EXPECT_NE(out.str().find(std::string("\"antslam_version\": \"") + kVersion + "\""),
+            std::string::npos);
   EXPECT_EQ(b.refine.algorithm, RefineAlgorithm::slsqp);
   EXPECT_EQ(b.refine.max_evaluations, 123);
   EXPECT_FALSE(b.refine.graduated);

@@ -7,7 +7,8 @@
 
 namespace antslam::io {
 
-/// The document as JSON text (two-space indent, newline at the end). Bytes of a string that are
+/// The document as JSON text (two-space indent, newline at the end), an object with the member
+/// "antslam_version" (the version that wrote it) added. Bytes of a string that are
 /// not UTF-8 (a file name, a TSPLIB NAME) become U+FFFD; a number that is not finite (JSON
 /// would write null) throws std::logic_error naming its field, as an internal error: the
 /// readers reject non-finite input, so no result should hold one.

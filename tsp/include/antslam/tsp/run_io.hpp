@@ -20,10 +20,12 @@ void write_trace_csv(std::ostream& out, std::span<const aco::IterationReport> tr
 
 /// The run's summary as a JSON document. `length` is the best tour's length, `optimum` the
 /// instance's if known, `setup_s` the seconds before the budget (reading, candidate lists, the
-/// colony); `islands` and `island` for an island run.
+/// colony); `islands` and `island` for an island run. Its "settings" hold every setting that
+/// ran: the budget, every engine parameter as resolved for the instance, the local search.
 nlohmann::json run_json(const TspProblem& problem, const SolverSettings& settings,
-                        const aco::RunResult& result, double length, std::optional<double> optimum,
-                        double setup_s, const std::optional<aco::IslandSettings>& islands,
+                        const aco::Termination& budget, const aco::RunResult& result, double length,
+                        std::optional<double> optimum, double setup_s,
+                        const std::optional<aco::IslandSettings>& islands,
                         const std::optional<aco::IslandResult>& island);
 
 }  // namespace antslam::tsp
