@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <stop_token>
 #include <string>
 #include <utility>
@@ -224,6 +225,36 @@ TEST(Parameters, NonsenseIsRefusedByName) {
   EXPECT_EQ(error_of([](Parameters& p) { p.tau_init = 2.0 * p.tau_max; }),
             "aco: need 0 < tau_init <= tau_max, both finite");
   EXPECT_EQ(error_of([](Parameters&) {}), "no error");
+}
+
+/// A layered problem whose cost is `value` whatever the choice: 2 layers of 2 options.
+struct ConstantCost {
+  double value;
+  std::size_t layer_count() const { return 2; }
+  std::size_t option_count(std::size_t) const { return 2; }
+  double cost(std::span<const std::uint32_t>) const { return value; }
+};
+
+TEST(Costs, ANegativeOrNanCostIsRefusedByEveryVariantAndZeroOrInfinityIsNot) {
+  const std::string advice =
+      "; a problem's costs must be numbers >= 0 (to maximise a value v, minimise e.g. bound - v "
+      "or 1 / (1 + v))";
+  for (const VariantInfo& info : kVariants) {
+    Parameters p;
+    p.variant = info.variant;
+    const auto error_of = [&](double value) {
+      try {
+        solve(ConstantCost{value}, p, {.max_iterations = 3});
+      } catch (const std::invalid_argument& e) {
+        return std::string(e.what());
+      }
+      return std::string("no error");
+    };
+    EXPECT_EQ(error_of(-54.0), "aco: a solution's cost is -54" + advice) << info.name;
+    EXPECT_EQ(error_of(std::nan("")), "aco: a solution's cost is nan" + advice);
+    EXPECT_EQ(error_of(0.0), "no error");
+    EXPECT_EQ(error_of(std::numeric_limits<double>::infinity()), "no error");
+  }
 }
 
 TEST(Termination, RejectsAnUnboundedRunAndNonsenseBudgets) {

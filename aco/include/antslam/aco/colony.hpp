@@ -18,6 +18,7 @@
 #include <numeric>
 #include <optional>
 #include <span>
+#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -183,6 +184,7 @@ class Colony {
       for (std::size_t a = 1; a < ants; ++a)
         if (skipped_[a] != 0) ants_[a] = ants_[0];
     }
+    check_costs();
     if (kHasLocalSearch && !improve_all) {
       rank();
       backend_.for_each(settings_.local_search_ants, [&](std::size_t r) {
@@ -190,6 +192,7 @@ class Colony {
         improve(a, stop);
         ants_[a].cost = static_cast<double>(problem_->cost(ants_[a].path));
       });
+      check_costs();
     }
     rank();
 
@@ -302,6 +305,21 @@ class Colony {
   }
 
   /// Focused construction from the second iteration on: the source is the best-so-far tour with
+  /// Throws std::invalid_argument unless every ant's cost is >= 0 (+infinity allowed): the
+  /// ranking needs ordered costs and the deposits (eq. 2, 12) need costs >= 0; a problem that
+  /// maximises a value v minimises, e.g., bound - v or 1 / (1 + v). Checked after the ants ran,
+  /// not inside the parallel loop, where an exception could not leave an OpenMP team.
+  void check_costs() const {
+    for (const Solution& ant : ants_) {
+      if (ant.cost >= 0.0) continue;
+      std::ostringstream what;
+      what << "aco: a solution's cost is " << ant.cost
+           << "; a problem's costs must be numbers >= 0 (to maximise a value v, minimise e.g. "
+              "bound - v or 1 / (1 + v))";
+      throw std::invalid_argument(what.str());
+    }
+  }
+
   /// probability focused.global_best_source, else the previous iteration's best (drawn from the
   /// stream after the last ant's, so it does not depend on threads).
   void choose_source() {

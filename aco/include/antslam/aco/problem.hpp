@@ -1,6 +1,7 @@
 #pragma once
 // The three problem families the engine solves. A problem plugs in by satisfying one concept;
-// the engine never sees anything else of it.
+// the engine never sees anything else of it. Every family minimises a cost that must be a number
+// >= 0 (+infinity allowed): the colony refuses a NaN or a negative cost with std::invalid_argument.
 
 #include <concepts>
 #include <cstddef>
