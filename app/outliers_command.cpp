@@ -39,7 +39,7 @@ void run(OutliersOptions o) {
   const std::filesystem::path list = outputs.add(slam::outliers_path_of(o.output));
   const slam::PoseGraph graph = slam::read_g2o_file(o.input);
   const slam::SpoiledGraph spoiled = io::in_context_of(o.input, [&] {
-    slam::split_chain(graph, o.input);  // the robust back ends need a chain: refuse early
+    slam::split_sessions(graph, o.input);  // what the robust back ends refuse, refused early
     return slam::add_outliers(graph, o.s);
   });
   outputs.write(graph_out, [&](std::ostream& out) { slam::write_g2o(out, spoiled.graph); });
