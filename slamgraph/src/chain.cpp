@@ -1,7 +1,6 @@
 #include "antslam/slamgraph/chain.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 namespace antslam::slam {

@@ -92,14 +92,6 @@ CeresResult optimize_pose_graph(const PoseGraph& graph, std::span<const Pose2> i
   if (settings.max_iterations <= 0) throw std::invalid_argument("ceres: max_iterations <= 0");
   std::vector<Eigen::Vector3d> poses;
   for (const Pose2& p : initial) poses.push_back(p.vector());
-  ceres::Problem problem;
-  for (std::size_t e = 0; e < graph.edges.size(); ++e) {
-    if (losses[e].kind == EdgeLoss::Kind::weighted && losses[e].parameter == 0.0) continue;
-    const ForwardEdge edge = forward(graph.edges[e]);
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<detail::RelativePoseError, 3, 3, 3>(
-                                 new detail::RelativePoseError(edge.error)),
-                             make_loss(losses[e]), poses[edge.lo].data(), poses[edge.hi].data());
-  }
   // Every connected part of the graph the losses keep (sessions no kept edge joins) is held at
   // its lowest vertex; a graph that chains every pose has one part, held at vertex 0.
   std::vector<std::size_t> part(poses.size());
@@ -108,9 +100,14 @@ CeresResult optimize_pose_graph(const PoseGraph& graph, std::span<const Pose2> i
     while (part[v] != v) v = part[v] = part[part[v]];
     return v;
   };
+  ceres::Problem problem;
   for (std::size_t e = 0; e < graph.edges.size(); ++e) {
     if (losses[e].kind == EdgeLoss::Kind::weighted && losses[e].parameter == 0.0) continue;
-    const std::size_t a = root(graph.edges[e].from), b = root(graph.edges[e].to);
+    const ForwardEdge edge = forward(graph.edges[e]);
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<detail::RelativePoseError, 3, 3, 3>(
+                                 new detail::RelativePoseError(edge.error)),
+                             make_loss(losses[e]), poses[edge.lo].data(), poses[edge.hi].data());
+    const std::size_t a = root(edge.lo), b = root(edge.hi);
     part[std::max(a, b)] = std::min(a, b);  // the lowest vertex stays the root
   }
   for (std::size_t v = 0; v < poses.size(); ++v)

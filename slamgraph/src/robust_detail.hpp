@@ -20,9 +20,8 @@ inline double seconds_since(std::chrono::steady_clock::time_point start) {
 std::vector<EdgeLoss> edge_losses(const PoseGraph& graph, const ChainSplit& split,
                                   const std::vector<EdgeLoss>& closure_loss);
 
-/// Ceres from `initial` with the given losses; adds its time to result.optimize_s and stores
-/// the poses in result.poses.
-/// Ceres from `initial`: result.poses, its time added to result.optimize_s; returns its final cost.
+/// Ceres from `initial` with the given losses; adds its time to result.optimize_s, stores the
+/// poses in result.poses and returns the final cost.
 double optimize(const PoseGraph& graph, const std::vector<Pose2>& initial,
                 const std::vector<EdgeLoss>& losses, const RobustSettings& settings,
                 RobustResult& result);

@@ -242,7 +242,7 @@ void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double 
     optimize(graph, initial, accepted, settings, result);
     return;
   }
-  const std::vector<Pose2> checked = result.poses;
+  const std::vector<Pose2> checked = std::move(result.poses);
   const double from_odometry = optimize(graph, initial, accepted, settings, result);
   std::vector<Pose2> odometry_map = std::move(result.poses);
   const double from_checked = optimize(graph, checked, accepted, settings, result);

@@ -413,4 +413,3 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
 
 }  // namespace
 }  // namespace antslam::slam
-

@@ -304,7 +304,6 @@ class Colony {
       local_search_.improve(*problem_, ants_[a].path, workspaces_[a], rngs_[a], stop);
   }
 
-  /// Focused construction from the second iteration on: the source is the best-so-far tour with
   /// Throws std::invalid_argument unless every ant's cost is >= 0 (+infinity allowed): the
   /// ranking needs ordered costs and the deposits (eq. 2, 12) need costs >= 0; a problem that
   /// maximises a value v minimises, e.g., bound - v or 1 / (1 + v). Checked after the ants ran,
@@ -320,6 +319,7 @@ class Colony {
     }
   }
 
+  /// Focused construction from the second iteration on: the source is the best-so-far tour with
   /// probability focused.global_best_source, else the previous iteration's best (drawn from the
   /// stream after the last ant's, so it does not depend on threads).
   void choose_source() {
