@@ -43,6 +43,7 @@ struct RobustOptions {
   std::string backend = "auto";
   bool no_clique_check = false;
   bool shown_noise = false;
+  bool no_widen = false;
   slam::RobustSettings s;
 };
 
@@ -67,6 +68,7 @@ void run(RobustOptions o) {
   o.s.backend = parse_backend_option(o.backend);
   o.s.check_clique = !o.no_clique_check;
   o.s.shown_noise = o.shown_noise;
+  o.s.widen_noise = !o.no_widen;
   aco::resolve(o.s.backend, o.s.threads);  // serial on more than one thread fails here, up front
   io::OutputFiles outputs;
   const std::filesystem::path graph_out = outputs.add(o.output + ".g2o");
@@ -184,6 +186,10 @@ void add_robust_command(CLI::App& app) {
                   "those they share, and the test at that noise (0 = never, 1e9 = always)")
       ->check(finite_in(0.0, 1e9))
       ->capture_default_str();
+  cmd->add_flag(
+      "--no-widen", o->no_widen,
+      "pcm-*: decide at the stated noise also where the graph's short cycles show more "
+      "(by default an axis stated over 1.25 times narrower is widened to what they show)");
   cmd->add_option("--prune-from", o->s.prune_from,
                   "pcm-*: from this many closures the clique search sees only those the pruning "
                   "leaves (a greedy clique's size bounds the degree; closures that agree with all "

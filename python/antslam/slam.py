@@ -167,6 +167,7 @@ _ROBUST = dict(
     {name: "aco.parameters." + attribute for name, attribute in _options.ENGINE.items()},
     confidence="inlier_confidence", cauchy_scale="cauchy_scale", dcs_phi="dcs_phi",
     shown_noise="shown_noise", check_clique="check_clique", check_phi="check_phi", recalibrate_below="recalibrate_below",
+    widen_noise="widen_noise",
     prune_from="prune_from", exact_time_limit="exact_time_limit_s",
     iterations="aco.termination.max_iterations", plateau_steps="aco.plateau_steps",
     proof_nodes="aco.proof_nodes",
@@ -208,7 +209,8 @@ def robust(graph, method="pcm-aco", *, variant=None, seed=1, **options):
     the graph's short cycles show; result.noise_scale), check_clique (False: the published
     PCM), check_phi (the check's DCS Phi in multiples of the clique's median unary distance; 0:
     dcs_phi), recalibrate_below (the recalibrated check runs when the checked graph's variance
-    factor is below it; 0: never), prune_from (closures from which the clique search sees only
+    factor is below it; 0: never), widen_noise (True: an axis stated over 1.25 times narrower
+    than the graph's short cycles show is decided at the noise they show; result.widened), prune_from (closures from which the clique search sees only
     what the pruning leaves), exact_time_limit (s), and for pcm-aco
     variant, seed, iterations, plateau_steps, proof_nodes and the engine's parameters (ants,
     rho, ...); backend, threads. The result: poses (n, 3), closures ((m, 2) vertex pairs of the

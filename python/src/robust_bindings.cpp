@@ -95,6 +95,7 @@ void bind_robust(py::module_& m) {
       .def_readwrite("check_clique", &slam::RobustSettings::check_clique)
       .def_readwrite("check_phi", &slam::RobustSettings::check_phi)
       .def_readwrite("recalibrate_below", &slam::RobustSettings::recalibrate_below)
+      .def_readwrite("widen_noise", &slam::RobustSettings::widen_noise)
       .def_readwrite("prune_from", &slam::RobustSettings::prune_from)
       .def_property(
           "exact_time_limit_s", [](const slam::RobustSettings& s) { return s.exact.time_limit_s; },
@@ -125,6 +126,13 @@ void bind_robust(py::module_& m) {
             return std::pair{r.result.shown_noise->scale.xy, r.result.shown_noise->scale.theta};
           },
           "shown_noise: the (x-y, heading) scale of the stated deviations the graph shows")
+      .def_property_readonly(
+          "widened",
+          [](const RobustRun& r) -> std::optional<std::pair<double, double>> {
+            if (!r.result.widened) return std::nullopt;
+            return std::pair{r.result.widened->xy, r.result.widened->theta};
+          },
+          "widen_noise: the (x-y, heading) scale decided at, None where no axis was widened")
       .def_property_readonly("variance_factor",
                              [](const RobustRun& r) { return r.result.variance_factor; })
       .def_property_readonly("core", [](const RobustRun& r) { return clique_of(r.result.core); })

@@ -200,29 +200,12 @@ void recalibrated_check(const PoseGraph& graph, const std::vector<Pose2>& initia
   accept_after_dcs(graph, either, *f * c2, *result.check_phi, settings, result);
 }
 
-}  // namespace
-
-void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double c2,
-             const RobustSettings& settings, RobustResult& result) {
+/// The selection at the noise `graph` states: the maximum clique, its joint check and the final
+/// least squares. `tests` carries the confidence and the heading's linear regime.
+void select_closures(const PoseGraph& graph, const std::vector<Pose2>& initial, double c2,
+                     const ConsistencySettings& tests, const RobustSettings& settings,
+                     RobustResult& result) {
   const std::size_t m = result.split.closures.size();
-  // At the stated noise every test runs at the inlier confidence (c2). At the noise the graph
-  // shows (shown_noise.hpp) the tests are sharp, and a true closure must pass all its m - 1
-  // pairwise tests and the check: each at the family-wise confidence (pairwise_confidence); that
-  // noise also says where a cycle's heading leaves the linear regime (consistency.hpp).
-  const auto start = std::chrono::steady_clock::now();
-  ConsistencySettings tests{.confidence = settings.inlier_confidence,
-                            .backend = settings.backend,
-                            .threads = settings.threads};
-  if (settings.shown_noise) {
-    result.shown_noise = estimate_shown_noise(stated, result.split);
-    tests.confidence = pairwise_confidence(settings.inlier_confidence, m);
-    tests.linear_heading_sd = kLinearHeadingSd;
-    c2 = chi_square3_quantile(tests.confidence);
-  }
-  std::optional<PoseGraph> rescaled;
-  if (result.shown_noise) rescaled = at_noise_scale(stated, result.shown_noise->scale);
-  const PoseGraph& graph = rescaled ? *rescaled : stated;
-  result.consistency_s += seconds_since(start);
   result.accepted.assign(m, false);
   if (m > 0) {
     result.clique = maximum_clique_of(graph, tests, settings, result);
@@ -247,6 +230,47 @@ void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double 
   std::vector<Pose2> odometry_map = std::move(result.poses);
   const double from_checked = optimize(graph, checked, accepted, settings, result);
   if (!(from_checked < from_odometry)) result.poses = std::move(odometry_map);
+}
+
+}  // namespace
+
+void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double c2,
+             const RobustSettings& settings, RobustResult& result) {
+  const std::size_t m = result.split.closures.size();
+  ConsistencySettings tests{.confidence = settings.inlier_confidence,
+                            .backend = settings.backend,
+                            .threads = settings.threads};
+  // At the noise the graph shows (shown_noise.hpp) the tests are sharp, and a true closure must
+  // pass all its m - 1 pairwise tests and the check: each at the family-wise confidence
+  // (pairwise_confidence); that noise also says where a cycle's heading leaves the linear regime
+  // (consistency.hpp).
+  if (settings.shown_noise) {
+    auto start = std::chrono::steady_clock::now();
+    result.shown_noise = estimate_shown_noise(stated, result.split);
+    tests.confidence = pairwise_confidence(settings.inlier_confidence, m);
+    tests.linear_heading_sd = kLinearHeadingSd;
+    c2 = chi_square3_quantile(tests.confidence);
+    const PoseGraph graph = at_noise_scale(stated, result.shown_noise->scale);
+    result.consistency_s += seconds_since(start);
+    select_closures(graph, initial, c2, tests, settings, result);
+    return;
+  }
+  // An axis the graph states narrower than its short cycles show (by more than kWidenAbove) is
+  // decided at the noise they show; an axis stated wider is left to the recalibrated check.
+  std::optional<PoseGraph> widened;
+  if (settings.widen_noise && m > 0) {
+    auto start = std::chrono::steady_clock::now();
+    result.shown_noise = estimate_shown_noise(stated, result.split);
+    const auto wider = [](double shown) { return shown > kWidenAbove ? shown : 1.0; };
+    const NoiseScale scale{wider(result.shown_noise->scale.xy),
+                           wider(result.shown_noise->scale.theta)};
+    if (scale.xy > 1.0 || scale.theta > 1.0) {
+      widened = at_noise_scale(stated, scale);
+      result.widened = scale;
+    }
+    result.consistency_s += seconds_since(start);
+  }
+  select_closures(widened ? *widened : stated, initial, c2, tests, settings, result);
 }
 
 }  // namespace antslam::slam::detail

@@ -26,6 +26,7 @@ ordered_json settings_json(const RobustSettings& s) {
           {"check_clique", s.check_clique},
           {"check_phi", s.check_phi},
           {"recalibrate_below", s.recalibrate_below},
+          {"widen_noise", s.widen_noise},
           {"prune_from", s.prune_from},
           {"gnc_mu_factor", s.gnc.mu_factor},
           {"exact_time_limit_s", s.exact.time_limit_s},
@@ -75,6 +76,7 @@ void write_robust_result(std::ostream& out, const PoseGraph& graph, const Robust
         {"scale_theta", r.shown_noise->scale.theta}, {"cycles", r.shown_noise->cycles},
         {"inliers", r.shown_noise->inliers},         {"rounds", r.shown_noise->rounds}};
   }
+  if (r.widened) j["widened"] = {{"scale_xy", r.widened->xy}, {"scale_theta", r.widened->theta}};
   if (r.clique) {
     j["clique"] = {{"size", r.clique->clique.vertices.size()},
                    {"upper_bound", r.clique->clique.upper_bound},

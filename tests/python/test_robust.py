@@ -132,11 +132,31 @@ def test_the_consistency_graph_keeps_its_invariants(spoiled):
         antslam.slam.consistency(graph, confidence=1.5)
 
 
-def test_robust_reports_the_noise_the_graph_shows():
+def narrowed(path, factor, out):
+    """The g2o graph at `path` with every information matrix times `factor`, written to `out`."""
+    lines = []
+    for line in path.read_text().splitlines():
+        fields = line.split()
+        if fields and fields[0] == "EDGE_SE2":
+            fields[6:12] = [repr(float(v) * factor) for v in fields[6:12]]
+        lines.append(" ".join(fields))
+    out.write_text("\n".join(lines) + "\n")
+    return out
+
+
+def test_robust_reports_the_noise_the_graph_shows(tmp_path):
     graph = antslam.slam.read_graph(RING)
-    stated = antslam.slam.robust(graph, "pcm-aco")
+    default = antslam.slam.robust(graph, "pcm-aco")
     shown = antslam.slam.robust(graph, "pcm-aco", shown_noise=True)
-    assert stated.noise_scale is None
+    stated = antslam.slam.robust(graph, "pcm-aco", widen_noise=False)
+    assert stated.noise_scale is None and stated.widened is None
     xy, theta = shown.noise_scale
     assert 0 < xy < 1 and 0 < theta < 1  # ring states its noise wider than it shows
+    assert default.noise_scale == shown.noise_scale  # estimated, but not widened
+    assert default.widened is None and list(default.accepted) == list(stated.accepted)
+    # x-y stated 20 times narrower: about 8 times narrower than shown, the heading still wider
+    narrow = narrowed(RING, 400.0, tmp_path / "narrow.g2o")
+    widened = antslam.slam.robust(antslam.slam.read_graph(narrow), "pcm-aco").widened
+    assert widened is not None and widened[0] == pytest.approx(20 * xy, rel=0.2)
+    assert widened[1] == 1
     assert antslam.slam.robust(graph, "gnc").noise_scale is None

@@ -86,9 +86,10 @@ TEST(ShownNoise, AtNoiseScaleScalesEveryInformationMatrixPerAxis) {
 TEST(ShownNoise, PcmAtTheShownNoiseKeepsWhatATooNarrowStatementDrops) {
   // Stated 6 times narrower than shown in x-y and 3 times in heading, random false closures (those
   // the true poses nearly satisfy left out: chi2 under 100 against the truth, places revisited):
-  // at the stated noise the pairwise test drops most true closures; at the noise shown, nearly
-  // every true closure is kept and few false ones (the family-wise thresholds are wider: the
-  // price of keeping the true ones, docs/robust-closures.md).
+  // at the stated noise the pairwise test drops most true closures; widened to the noise shown
+  // (the default) most are kept and few false ones; at the noise shown with family-wise
+  // thresholds (shown_noise) nearly every true closure (the thresholds are wider: the price of
+  // keeping the true ones, docs/robust-closures.md).
   const testing::TrueGraph t = testing::square_laps(4, 10, 1, 0.01, 11, 1.0);
   const PoseGraph g = at_noise_scale(t.graph, {1.0 / 6, 1.0 / 3});
   const SpoiledGraph all = add_outliers(g, {.count = 60, .seed = 2});
@@ -101,17 +102,58 @@ TEST(ShownNoise, PcmAtTheShownNoiseKeepsWhatATooNarrowStatementDrops) {
     outlier.push_back(true);
   }
   ASSERT_GT(std::count(outlier.begin(), outlier.end(), true), 30);
-  const RobustResult stated = solve_robust(spoiled, RobustMethod::pcm_aco, {}, "s");
+  RobustSettings as_stated;
+  as_stated.widen_noise = false;
+  const RobustResult stated = solve_robust(spoiled, RobustMethod::pcm_aco, as_stated, "s");
+  const RobustResult widened = solve_robust(spoiled, RobustMethod::pcm_aco, {}, "s");
   RobustSettings settings;
   settings.shown_noise = true;
   const RobustResult shown = solve_robust(spoiled, RobustMethod::pcm_aco, settings, "s");
   ASSERT_TRUE(shown.shown_noise && shown.shown_noise->estimated);
-  EXPECT_FALSE(stated.shown_noise);
+  EXPECT_FALSE(stated.shown_noise || stated.widened);
+  // Widened on both axes to exactly the estimate, which is near the truth (6, 3).
+  ASSERT_TRUE(widened.widened && widened.shown_noise);
+  EXPECT_EQ(widened.widened->xy, widened.shown_noise->scale.xy);
+  EXPECT_EQ(widened.widened->theta, widened.shown_noise->scale.theta);
+  EXPECT_NEAR(widened.widened->xy, 6.0, 1.5);
+  EXPECT_NEAR(widened.widened->theta, 3.0, 1.0);
+  EXPECT_FALSE(shown.widened);
   const AcceptanceScores at_stated = score_acceptance(stated.accepted, outlier);
+  const AcceptanceScores at_widened = score_acceptance(widened.accepted, outlier);
   const AcceptanceScores at_shown = score_acceptance(shown.accepted, outlier);
   EXPECT_LT(*at_stated.recall, 0.5);
+  EXPECT_GE(*at_widened.precision, 0.95);
+  EXPECT_GE(*at_widened.recall, 0.8);
   EXPECT_GE(*at_shown.precision, 0.95);
   EXPECT_GE(*at_shown.recall, 0.98);
+}
+
+TEST(ShownNoise, OnlyAnAxisStatedNarrowerThanShownIsWidened) {
+  // The same laps stated as they are, 4 times wider, and 4 times narrower in the heading only:
+  // the first two are decided at their stated noise (the estimate within kWidenAbove, or below
+  // 1); the third is widened in the heading alone, its x-y left as stated, and then keeps as
+  // many closures as the laps stated as they are, more than at its stated noise.
+  const testing::TrueGraph t = testing::square_laps(4, 10, 1, 0.01, 11, 1.0);
+  const RobustResult as_is = solve_robust(t.graph, RobustMethod::pcm_aco, {}, "t");
+  ASSERT_TRUE(as_is.shown_noise);
+  EXPECT_LE(as_is.shown_noise->scale.xy, kWidenAbove);
+  EXPECT_LE(as_is.shown_noise->scale.theta, kWidenAbove);
+  EXPECT_FALSE(as_is.widened);
+  const PoseGraph wider = at_noise_scale(t.graph, {4.0, 4.0});
+  EXPECT_FALSE(solve_robust(wider, RobustMethod::pcm_aco, {}, "t").widened);
+  const PoseGraph narrower = at_noise_scale(t.graph, {1.0, 0.25});
+  const RobustResult r = solve_robust(narrower, RobustMethod::pcm_aco, {}, "t");
+  ASSERT_TRUE(r.widened);
+  EXPECT_EQ(r.widened->xy, 1.0);
+  EXPECT_NEAR(r.widened->theta, 4.0, 1.0);
+  RobustSettings as_stated;
+  as_stated.widen_noise = false;
+  const RobustResult stated = solve_robust(narrower, RobustMethod::pcm_aco, as_stated, "t");
+  const auto kept = [](const RobustResult& x) {
+    return std::count(x.accepted.begin(), x.accepted.end(), true);
+  };
+  EXPECT_GT(kept(r), kept(stated));
+  EXPECT_GE(kept(r), kept(as_is));  // as many as the laps stated as they are
 }
 
 }  // namespace
