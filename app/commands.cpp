@@ -32,6 +32,7 @@ const std::pair<const char*, const char*> kExamples[] = {
      "antslam tsp-experiment --data-dir data/tsplib --instances eil51,kroA100 --time 1 --csv "
      "runs.csv"},
     {"tsp-generate", "antslam tsp-generate --cities 1000 --seed 1 -o results/random1000.tsp"},
+    {"qap", "antslam qap --instance data/qaplib/chr12a.dat --iterations 500 --json chr12a.json"},
     {"odometry", "antslam odometry data/laser/mit-csail.clf -o results/mit-odometry.tum"},
     {"simulate-odometry",
      "antslam simulate-odometry data/laser/corrected/aces-corrected.log.gz --out-dir results/aces"},
@@ -58,6 +59,7 @@ void add_commands(CLI::App& app) {
   add_tsp_command(app);
   add_tsp_experiment_command(app);
   add_tsp_generate_command(app);
+  add_qap_command(app);
   add_odometry_command(app);
   add_simulate_odometry_command(app);
   add_tinyslam_command(app);

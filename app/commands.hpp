@@ -18,6 +18,7 @@ void add_map_command(CLI::App& app);
 void add_tsp_command(CLI::App& app);
 void add_tsp_experiment_command(CLI::App& app);
 void add_tsp_generate_command(CLI::App& app);
+void add_qap_command(CLI::App& app);
 void add_odometry_command(CLI::App& app);
 void add_simulate_odometry_command(CLI::App& app);
 void add_tinyslam_command(CLI::App& app);

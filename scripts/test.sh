@@ -31,7 +31,7 @@ case "${1:-}" in
     build_dir=build-tsan
     cmake_args=("${sanitizer_build[@]}" -DANTSLAM_SANITIZE=thread
                 -DANTSLAM_BUILD_BENCH=OFF -DANTSLAM_BUILD_PYTHON=OFF)
-    targets=(--target test_aco test_tsp test_slamgraph test_mapping test_contract)
+    targets=(--target test_aco test_tsp test_qap test_slamgraph test_mapping test_contract)
     ctest_args=(-L parallel)
     # Archer (LLVM OpenMP's ThreadSanitizer tool) makes OpenMP's own synchronisation visible.
     # oneTBB's task bookkeeping is left out (cmake/tsan-ignorelist.txt); what remains of it are
@@ -63,7 +63,7 @@ fi
 # Each harness from a fresh corpus (its seeds only) with a fixed seed, so a run is repeatable;
 # the run counts give 10-20 s a harness on a loaded 2-core machine. Findings are kept in
 # build-fuzz/findings/ (docs/fuzzing.md says how to replay one).
-fuzz_runs=(tsplib:100000 tour:400000 carmen:120000 g2o:200000 fragment_set:30000 tum:400000
+fuzz_runs=(tsplib:100000 qaplib:100000 tour:400000 carmen:120000 g2o:200000 fragment_set:30000 tum:400000
            relations:400000)
 fuzz_dir="$build_dir/tests/fuzz"
 failed=()

@@ -1,16 +1,20 @@
 // The colony contract (colony_contract.hpp) on every real problem the project ships: the
 // synthetic layered problem of the engine, the TSP without and with each local search, with
 // both constructions (from nothing and focused), the AntSLAM problem of eq. (10) on the paper's
-// N = 9 set, and maximum weighted clique (the subset family) on a random graph.
+// N = 9 set, maximum weighted clique (the subset family) on a random graph, and the QAP (the
+// assignment family, chosen outside the engine through aco::family_of).
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <span>
 #include <vector>
 
 #include "antslam/aco/synthetic_layered.hpp"
 #include "antslam/clique/local_search.hpp"
 #include "antslam/clique/problem.hpp"
+#include "antslam/qap/local_search.hpp"
+#include "antslam/qap/qaplib.hpp"
 #include "antslam/slamgraph/slam_problem.hpp"
 #include "antslam/slamgraph/synth.hpp"
 #include "antslam/tsp/local_search.hpp"
@@ -27,6 +31,13 @@ bool feasible_layered(const Problem& problem, std::span<const std::uint32_t> pat
   for (std::size_t l = 0; l < path.size(); ++l)
     if (path[l] >= problem.option_count(l)) return false;
   return true;
+}
+
+/// Whether path lists 0..n-1 once each.
+bool is_permutation_of(std::span<const std::uint32_t> path, std::size_t n) {
+  std::vector<std::uint32_t> identity(n);
+  std::iota(identity.begin(), identity.end(), 0U);
+  return std::is_permutation(path.begin(), path.end(), identity.begin(), identity.end());
 }
 
 struct SyntheticLayered {
@@ -55,11 +66,7 @@ struct Tsp {
     }
   }
   bool feasible(std::span<const std::uint32_t> tour) const {
-    std::vector<std::uint32_t> sorted(tour.begin(), tour.end());
-    std::sort(sorted.begin(), sorted.end());
-    for (std::uint32_t i = 0; i < sorted.size(); ++i)
-      if (sorted[i] != i) return false;
-    return sorted.size() == shared().size();
+    return is_permutation_of(tour, shared().size());
   }
 };
 
@@ -123,6 +130,28 @@ struct Clique {
   }
 };
 
+/// tai12a (QAPLIB), without or with the pair-swap local search: an assignment is feasible when
+/// it puts the 12 facilities at 12 distinct locations.
+template <bool kPairSwap>
+struct Qap {
+  static constexpr std::size_t kIterations = 20;
+  static const qap::QapProblem& shared() {
+    static const qap::QapProblem p(qap::read_qaplib(ANTSLAM_DATA_DIR "/qaplib/tai12a.dat"));
+    return p;
+  }
+  const qap::QapProblem& problem() const { return shared(); }
+  auto local_search() const {
+    if constexpr (kPairSwap) {
+      return qap::PairSwapLocalSearch{};
+    } else {
+      return aco::NoLocalSearch{};
+    }
+  }
+  bool feasible(std::span<const std::uint32_t> assignment) const {
+    return is_permutation_of(assignment, shared().size());
+  }
+};
+
 using TspNoLocalSearch = Tsp<tsp::LocalSearchKind::none>;
 using TspTwoOpt = Tsp<tsp::LocalSearchKind::two_opt>;
 using TspTwoHalfOpt = Tsp<tsp::LocalSearchKind::two_half_opt>;
@@ -143,6 +172,12 @@ using CliqueSwaps = Clique<true>;
 
 ANTSLAM_COLONY_CONTRACT(CliqueNoLocalSearch, CliqueNoLocalSearch);
 ANTSLAM_COLONY_CONTRACT(CliqueSwaps, CliqueSwaps);
+
+using QapNoLocalSearch = Qap<false>;
+using QapPairSwap = Qap<true>;
+
+ANTSLAM_COLONY_CONTRACT(QapNoLocalSearch, QapNoLocalSearch);
+ANTSLAM_COLONY_CONTRACT(QapPairSwap, QapPairSwap);
 
 }  // namespace
 }  // namespace antslam

@@ -25,6 +25,7 @@
 
 #include "antslam/aco/backend.hpp"
 #include "antslam/aco/backend_kind.hpp"
+#include "antslam/aco/family.hpp"
 #include "antslam/aco/focused_construction.hpp"
 #include "antslam/aco/layered_family.hpp"
 #include "antslam/aco/local_search.hpp"
@@ -38,24 +39,6 @@
 #include "antslam/aco/variant.hpp"
 
 namespace antslam::aco {
-
-template <class P>
-struct FamilyOf;
-template <class P>
-requires LayeredProblem<P>
-struct FamilyOf<P> {
-  using type = LayeredFamily<P>;
-};
-template <class P>
-requires PermutationProblem<P>
-struct FamilyOf<P> {
-  using type = PermutationFamily<P>;
-};
-template <class P>
-requires SubsetProblem<P>
-struct FamilyOf<P> {
-  using type = SubsetFamily<P>;
-};
 
 struct ColonySettings {
   std::size_t ants = 20;   ///< ants per iteration (A of Algorithm 2)
@@ -102,8 +85,16 @@ template <class Problem, class Rule, class Update, class LocalSearch = NoLocalSe
           class Exec = SerialBackend>
 requires Backend<Exec>
 class Colony {
+  static_assert(HasFamily<Problem>,
+                "aco::Colony: no family for this problem: satisfy LayeredProblem, "
+                "PermutationProblem or SubsetProblem (problem.hpp), or specialise "
+                "aco::family_of<Problem> with a family of your own (family.hpp)");
+  static_assert(!HasFamily<Problem> || FamilyOfProblem<Problem>,
+                "aco::Colony: family_of<Problem>::type lacks a member of aco::FamilyFor "
+                "(family.hpp)");
+
  public:
-  using Family = typename FamilyOf<Problem>::type;
+  using Family = family_t<Problem>;
   using Trail = typename Family::Trail;
   static constexpr bool kHasLocalSearch = !std::is_same_v<LocalSearch, NoLocalSearch>;
   static constexpr bool kCanFocus = requires(Family & f, std::span<const std::uint32_t> tour) {

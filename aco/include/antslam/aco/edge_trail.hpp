@@ -100,14 +100,11 @@ class EdgeTrail : public PheromoneValues {
 
   /// Mean lambda-branching factor over the candidate lists (as ACOTSP's node_branching).
   double branching_factor(double lambda) const {
-    double branches = 0.0;
+    double total = 0.0;
     for (std::uint32_t i = 0; i < n_; ++i) {
-      const auto values = row(i);
-      const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-      const double cutoff = *lo + lambda * (*hi - *lo);
-      for (double t : values) branches += (t >= cutoff) ? 1.0 : 0.0;
+      total += branches(row(i), lambda);
     }
-    return branches / static_cast<double>(n_);
+    return total / static_cast<double>(n_);
   }
 
  private:

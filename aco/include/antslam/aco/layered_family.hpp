@@ -10,10 +10,12 @@
 #include <limits>
 #include <vector>
 
+#include "antslam/aco/family.hpp"
 #include "antslam/aco/layered_trail.hpp"
 #include "antslam/aco/local_update_after_construction.hpp"
 #include "antslam/aco/problem.hpp"
 #include "antslam/aco/random.hpp"
+#include "antslam/aco/rules.hpp"
 #include "antslam/aco/update_context.hpp"
 
 namespace antslam::aco {
@@ -64,9 +66,7 @@ class LayeredFamily {
   /// Builds the cumulative sampling table of every layer for this iteration.
   template <class Rule>
   void prepare(const Rule& rule) {
-    const auto tau = trail_.values();
-    for (std::size_t i = 0; i < tau.size(); ++i)
-      weight_[i] = (alpha_ == 1.0 ? tau[i] : std::pow(tau[i], alpha_)) * eta_beta_[i];
+    choice_weights(trail_.values(), alpha_, eta_beta_, weight_);
     for (std::size_t l = 0; l < trail_.layer_count(); ++l) {
       const std::size_t begin = trail_.offset(l);
       const std::size_t m = trail_.option_count(l);
@@ -125,6 +125,11 @@ class LayeredFamily {
   std::vector<double> weight_;
   std::vector<double> probability_;
   std::vector<double> cdf_;
+};
+
+template <LayeredProblem P>
+struct family_of<P> {
+  using type = LayeredFamily<P>;
 };
 
 }  // namespace antslam::aco

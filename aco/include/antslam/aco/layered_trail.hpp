@@ -64,14 +64,9 @@ class LayeredTrail : public PheromoneValues {
   /// Mean lambda-branching factor (Gambardella & Dorigo 1995): per layer, the number of options
   /// whose pheromone exceeds min + lambda (max - min).
   double branching_factor(double lambda) const {
-    double branches = 0.0;
-    for (std::size_t l = 0; l < layer_count(); ++l) {
-      const auto values = layer(l);
-      const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-      const double cutoff = *lo + lambda * (*hi - *lo);
-      for (double t : values) branches += (t >= cutoff) ? 1.0 : 0.0;
-    }
-    return branches / static_cast<double>(layer_count());
+    double total = 0.0;
+    for (std::size_t l = 0; l < layer_count(); ++l) total += branches(layer(l), lambda);
+    return total / static_cast<double>(layer_count());
   }
 
  private:

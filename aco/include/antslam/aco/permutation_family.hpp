@@ -23,9 +23,11 @@
 
 #include "antslam/aco/backend.hpp"
 #include "antslam/aco/edge_trail.hpp"
+#include "antslam/aco/family.hpp"
 #include "antslam/aco/focused_construction.hpp"
 #include "antslam/aco/problem.hpp"
 #include "antslam/aco/random.hpp"
+#include "antslam/aco/rules.hpp"
 #include "antslam/aco/termination.hpp"
 #include "antslam/aco/update_context.hpp"
 
@@ -71,6 +73,9 @@ class PermutationFamily {
   Trail& trail() { return trail_; }
   const Trail& trail() const { return trail_; }
   std::size_t path_length() const { return n_; }
+
+  /// One ant per city without local search (Dorigo & Stuetzle 2004, Table 3.3).
+  static std::size_t default_ants(const P& problem) { return problem.size(); }
 
   void reserve_ants(std::size_t ants) {
     scratch_.clear();
@@ -258,9 +263,7 @@ class PermutationFamily {
     }
   }
 
-  void refresh(std::size_t e, double tau) {
-    weight_[e] = (alpha_ == 1.0 ? tau : std::pow(tau, alpha_)) * eta_beta_[e];
-  }
+  void refresh(std::size_t e, double tau) { weight_[e] = choice_weight(tau, alpha_, eta_beta_[e]); }
 
   /// Starts a tour at `start`; returns where its cities go (the vector is sized once, so that
   /// steps write only to its buffer, never to the vector itself).
@@ -355,6 +358,11 @@ class PermutationFamily {
   std::vector<double> weight_;
   std::vector<Scratch> scratch_;
   StopToken stop_;  ///< never expires unless set_stop() says otherwise
+};
+
+template <PermutationProblem P>
+struct family_of<P> {
+  using type = PermutationFamily<P>;
 };
 
 }  // namespace antslam::aco

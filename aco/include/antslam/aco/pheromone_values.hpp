@@ -36,6 +36,16 @@ class PheromoneValues {
 
  protected:
   PheromoneValues() = default;
+
+  /// The options of one decision whose pheromone is at least min + lambda (max - min) of theirs:
+  /// its lambda-branching factor (Gambardella & Dorigo 1995).
+  static double branches(std::span<const double> values, double lambda) {
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    const double cutoff = *lo + lambda * (*hi - *lo);
+    double count = 0.0;
+    for (double t : values) count += (t >= cutoff) ? 1.0 : 0.0;
+    return count;
+  }
   explicit PheromoneValues(std::size_t count) : tau_(count, 0.0) {}
 
   std::vector<double> tau_;  // the trails index it directly in their hot loops

@@ -1,6 +1,8 @@
 #pragma once
-// The three problem families the engine solves. A problem plugs in by satisfying one concept;
-// the engine never sees anything else of it. Every family minimises a cost that must be a number
+// The concepts of the engine's three built-in problem families. A problem plugs in by satisfying
+// one of them (its family then registers through aco::family_of, family.hpp) or by naming a
+// family of its own through that trait; the engine never sees anything else of it. Every family
+// minimises a cost that must be a number
 // >= 0 (+infinity allowed): the colony refuses a NaN or a negative cost with std::invalid_argument.
 
 #include <concepts>

@@ -5,6 +5,7 @@
 //   distribution(w, p)    the exact probabilities choose() draws from (used to precompute
 //                         per-layer sampling tables once per iteration for layered problems).
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 
@@ -50,6 +51,19 @@ inline void proportional(std::span<const double> w, std::span<double> p, double 
 }
 
 }  // namespace detail
+
+/// The weight tau^alpha eta^beta of an option (eq. 1), given eta^beta; pow is skipped for
+/// alpha = 1.
+inline double choice_weight(double tau, double alpha, double eta_beta) {
+  return (alpha == 1.0 ? tau : std::pow(tau, alpha)) * eta_beta;
+}
+
+/// choice_weight of every option: weight[e] = tau[e]^alpha eta_beta[e].
+inline void choice_weights(std::span<const double> tau, double alpha,
+                           std::span<const double> eta_beta, std::span<double> weight) {
+  for (std::size_t e = 0; e < tau.size(); ++e)
+    weight[e] = choice_weight(tau[e], alpha, eta_beta[e]);
+}
 
 /// Random-proportional rule, eq. (1) of the paper (Ant System) and eq. (11) (AntSLAM).
 struct RandomProportional {

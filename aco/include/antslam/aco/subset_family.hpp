@@ -12,9 +12,11 @@
 #include <span>
 #include <vector>
 
+#include "antslam/aco/family.hpp"
 #include "antslam/aco/local_update_after_construction.hpp"
 #include "antslam/aco/problem.hpp"
 #include "antslam/aco/random.hpp"
+#include "antslam/aco/rules.hpp"
 #include "antslam/aco/solution.hpp"
 #include "antslam/aco/subset_trail.hpp"
 #include "antslam/aco/update_context.hpp"
@@ -64,9 +66,7 @@ class SubsetFamily {
   /// Weights tau^alpha eta^beta of every element for this iteration.
   template <class Rule>
   void prepare(const Rule&) {
-    const auto tau = trail_.values();
-    for (std::size_t e = 0; e < tau.size(); ++e)
-      weight_[e] = (alpha_ == 1.0 ? tau[e] : std::pow(tau[e], alpha_)) * eta_beta_[e];
+    choice_weights(trail_.values(), alpha_, eta_beta_, weight_);
   }
 
   template <class Rule>
@@ -135,6 +135,11 @@ class SubsetFamily {
   std::vector<double> eta_beta_;
   std::vector<double> weight_;
   std::vector<Scratch> scratch_;
+};
+
+template <SubsetProblem P>
+struct family_of<P> {
+  using type = SubsetFamily<P>;
 };
 
 }  // namespace antslam::aco

@@ -154,20 +154,17 @@ inline ColonySettings colony_settings(const Parameters& p, std::size_t decisions
   return settings;
 }
 
-/// Colony settings of p on `problem` (p validated first).
+/// Colony settings of p on `problem` (p validated first): ants scale with the problem when its
+/// family says how (FamilyWithDefaultAnts), else the variant's fixed default.
 template <class Problem>
 ColonySettings colony_settings_for(const Problem& problem, const Parameters& p, bool local_search) {
-  constexpr bool kPermutation = PermutationProblem<Problem>;
-  std::size_t decisions = 0;
-  if constexpr (kPermutation) {
-    decisions = problem.size();
-  } else if constexpr (SubsetProblem<Problem>) {
-    decisions = problem.element_count();
-  } else {
-    decisions = problem.layer_count();
-  }
   validate(p);
-  return colony_settings(p, decisions, kPermutation, local_search);
+  using Family = family_t<Problem>;
+  if constexpr (FamilyWithDefaultAnts<Family, Problem>) {
+    return colony_settings(p, Family::default_ants(problem), true, local_search);
+  } else {
+    return colony_settings(p, 0, false, local_search);
+  }
 }
 
 /// Builds the colony of p.variant on `problem` (defaults resolved) and returns f(colony): the
