@@ -4,6 +4,10 @@
     result = antslam.tsp.solve(instance, variant="acs", iterations=100, seed=1,
                                local_search="2opt", threads=2)
     result.length, result.tour            # a float and a permutation of 0..n-1 (numpy)
+
+Instances of your own: `Instance(coords, edge_weight_type="EUC_2D", name="python")` from an
+(n, 2) array, `Instance.from_matrix(matrix, name="python")` from a symmetric (n, n) array of
+whole distances; both pickle and save as TSPLIB files.
 """
 import os
 from dataclasses import dataclass

@@ -4,12 +4,20 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "antslam/io/atomic_file.hpp"
 #include "antslam/tsp/generator.hpp"
+#include "antslam/tsp/instance.hpp"
 #include "antslam/tsp/optima.hpp"
 #include "antslam/tsp/solver.hpp"
 #include "antslam/tsp/tsplib.hpp"
@@ -63,10 +71,56 @@ aco::RunResult solve(const tsp::Instance& instance, const tsp::SolverSettings& s
   });
 }
 
+/// An instance from an (n, 2) array of city coordinates under a TSPLIB distance.
+tsp::Instance from_coordinates(const DoubleArray& coords, const std::string& edge_weight_type,
+                               const std::string& name) {
+  if (coords.ndim() != 2 || coords.shape(1) != 2)
+    throw std::invalid_argument("Instance: coords: expected an (n, 2) array of (x, y)");
+  const std::optional<tsp::EdgeWeightType> type = tsp::parse_edge_weight_type(edge_weight_type);
+  if (!type || *type == tsp::EdgeWeightType::explicit_matrix)
+    throw std::invalid_argument("Instance: edge_weight_type '" + edge_weight_type +
+                                "' is not one of EUC_2D, CEIL_2D, ATT, GEO (a matrix: "
+                                "Instance.from_matrix)");
+  const auto v = coords.unchecked<2>();
+  std::vector<tsp::Point> points(static_cast<std::size_t>(coords.shape(0)));
+  for (py::ssize_t k = 0; k < coords.shape(0); ++k)
+    points[static_cast<std::size_t>(k)] = {v(k, 0), v(k, 1)};
+  return tsp::Instance(name, *type, std::move(points));
+}
+
+/// An EXPLICIT instance from a symmetric (n, n) array of integer distances.
+tsp::Instance from_matrix(const DoubleArray& matrix, const std::string& name) {
+  if (matrix.ndim() != 2 || matrix.shape(0) != matrix.shape(1))
+    throw std::invalid_argument("Instance.from_matrix: expected an (n, n) array of distances");
+  const auto v = matrix.unchecked<2>();
+  const auto n = static_cast<std::size_t>(matrix.shape(0));
+  std::vector<std::int32_t> weights;
+  weights.reserve(n * n);
+  for (py::ssize_t i = 0; i < matrix.shape(0); ++i)
+    for (py::ssize_t j = 0; j < matrix.shape(1); ++j) {
+      const double d = v(i, j);
+      if (!(d >= 0.0 && d <= std::numeric_limits<std::int32_t>::max() && std::floor(d) == d)) {
+        std::ostringstream what;
+        what << "Instance.from_matrix: entry (" << i << ", " << j << ") is " << d
+             << ", not a whole number in [0, 2^31)";
+        throw std::invalid_argument(what.str());
+      }
+      weights.push_back(static_cast<std::int32_t>(d));
+    }
+  return tsp::Instance(name, n, std::move(weights));
+}
+
 }  // namespace
 
 void bind_tsp(py::module_& m) {
   py::class_<tsp::Instance>(m, "Instance", "A symmetric TSPLIB instance (tsp/instance.hpp)")
+      .def(py::init(&from_coordinates), py::arg("coords"), py::kw_only(),
+           py::arg("edge_weight_type") = "EUC_2D", py::arg("name") = "python",
+           "An instance from an (n, 2) array of city coordinates; distances by the TSPLIB rule "
+           "of edge_weight_type (EUC_2D: Euclidean, rounded to the nearest integer)")
+      .def_static("from_matrix", &from_matrix, py::arg("matrix"), py::kw_only(),
+                  py::arg("name") = "python",
+                  "An EXPLICIT instance from a symmetric (n, n) array of whole distances >= 0")
       .def_property_readonly("name", &tsp::Instance::name)
       .def_property_readonly("size", &tsp::Instance::size)
       .def("__len__", &tsp::Instance::size)

@@ -1,5 +1,7 @@
 """antslam.tsp: instances, the solver with every variant and backend, the program's tour for the
 same seed, the observer, and one-line errors."""
+import pickle
+
 import numpy as np
 import pytest
 
@@ -145,3 +147,49 @@ def test_generate_and_save_round_trip(tmp_path):
     instance.save(tmp_path / "r.tsp")
     again = antslam.tsp.read(tmp_path / "r.tsp")
     assert np.array_equal(again.coords, instance.coords)
+
+
+def test_an_instance_from_coordinates_is_the_tsplib_file_of_them(tmp_path):
+    read = antslam.tsp.read(DATA / "tsplib" / "eil51.tsp")
+    built = antslam.tsp.Instance(read.coords, name="eil51")
+    assert (built.name, len(built), built.edge_weight_type) == ("eil51", 51, "EUC_2D")
+    n = len(read)
+    assert all(built.distance(i, j) == read.distance(i, j) for i in range(n) for j in range(n))
+    # The same instance, so the same tour for the same seed.
+    a = antslam.tsp.solve(read, iterations=20, seed=5)
+    b = antslam.tsp.solve(built, iterations=20, seed=5)
+    assert list(a.tour) == list(b.tour) and a.length == b.length
+    ceil = antslam.tsp.Instance([[0, 0], [0.5, 0], [3, 4]], edge_weight_type="CEIL_2D")
+    assert (ceil.distance(0, 1), ceil.distance(0, 2)) == (1.0, 5.0)
+    built.save(tmp_path / "built.tsp")
+    assert np.array_equal(antslam.tsp.read(tmp_path / "built.tsp").coords, read.coords)
+
+
+def test_an_instance_from_a_distance_matrix():
+    matrix = np.array([[0, 3, 4, 5], [3, 0, 5, 4], [4, 5, 0, 3], [5, 4, 3, 0]])
+    instance = antslam.tsp.Instance.from_matrix(matrix, name="square")
+    assert (instance.name, len(instance), instance.edge_weight_type) == ("square", 4, "EXPLICIT")
+    assert all(instance.distance(i, j) == matrix[i, j] for i in range(4) for j in range(4))
+    # The 3 tours of 4 cities: 0-1-2-3 3+5+3+5 = 16, 0-2-1-3 4+5+4+5 = 18, 0-1-3-2 3+4+3+4 = 14.
+    lengths = [instance.tour_length(t) for t in ([0, 1, 2, 3], [0, 2, 1, 3], [0, 1, 3, 2])]
+    assert lengths == [16.0, 18.0, 14.0]
+    assert antslam.tsp.solve(instance, iterations=10, seed=1).length == 14.0
+    again = pickle.loads(pickle.dumps(instance))
+    assert all(again.distance(i, j) == matrix[i, j] for i in range(4) for j in range(4))
+
+
+def test_built_instances_refuse_bad_arrays_in_one_line():
+    with pytest.raises(ValueError, match=r"^Instance: coords: expected an \(n, 2\) array"):
+        antslam.tsp.Instance(np.zeros((5, 3)))
+    with pytest.raises(ValueError, match=r"^Instance: edge_weight_type 'MAN_2D' is not one of"):
+        antslam.tsp.Instance(np.zeros((5, 2)), edge_weight_type="MAN_2D")
+    with pytest.raises(ValueError, match=r"finite"):
+        antslam.tsp.Instance([[0, 0], [1, np.nan], [2, 2]])
+    with pytest.raises(ValueError, match=r"^Instance.from_matrix: expected an \(n, n\) array"):
+        antslam.tsp.Instance.from_matrix(np.zeros((3, 4)))
+    with pytest.raises(ValueError, match=r"^Instance.from_matrix: entry \(0, 1\) is 1.5, not a whole"):
+        antslam.tsp.Instance.from_matrix([[0, 1.5, 2], [1.5, 0, 2], [2, 2, 0]])
+    with pytest.raises(ValueError, match=r"^Instance.from_matrix: entry \(0, 2\) is -2, not a whole"):
+        antslam.tsp.Instance.from_matrix([[0, 1, -2], [1, 0, 2], [-2, 2, 0]])
+    with pytest.raises(ValueError, match=r"symmetric"):
+        antslam.tsp.Instance.from_matrix([[0, 1, 2], [1, 0, 2], [3, 2, 0]])
