@@ -71,6 +71,12 @@ void validate(const RobustSettings& s) {
     throw std::invalid_argument("robust: the check's Phi must be a finite number >= 0");
   if (!(s.recalibrate_below >= 0.0))
     throw std::invalid_argument("robust: the recalibration threshold must be a number >= 0");
+  const clique::AcoSearchSettings ants;
+  if ((s.aco.backend != ants.backend && s.aco.backend != s.backend) ||
+      (s.aco.threads != ants.threads && s.aco.threads != s.threads))
+    throw std::invalid_argument(
+        "robust: set the backend and threads of the settings themselves (they run the "
+        "consistency pairs and the ants), not those of its aco member");
   if (s.check_start_iterations <= 0)
     throw std::invalid_argument("robust: the clique check needs at least one start iteration");
 }

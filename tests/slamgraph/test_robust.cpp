@@ -409,6 +409,18 @@ TEST(Robust, MethodNamesRoundTripAndBadSettingsAreRejected) {
     s.recalibrate_below = below;
     EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
   }
+  // The ants run on the settings' backend and threads: the aco member's are refused unless they
+  // are its defaults or the same.
+  s = {};
+  s.aco.backend = aco::BackendKind::tbb;
+  EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  s.backend = aco::BackendKind::tbb;
+  EXPECT_NO_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"));
+  s = {};
+  s.aco.threads = 2;
+  EXPECT_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"), std::invalid_argument);
+  s.threads = 2;
+  EXPECT_NO_THROW(solve_robust(t.graph, RobustMethod::pcm_aco, s, "t"));
 }
 
 }  // namespace

@@ -132,7 +132,8 @@ struct RobustSettings {
                                   ///< pruning existed; it may pick another of equal size)
   GncSettings gnc;                ///< graduated non-convexity
   clique::ExactSettings exact;    ///< pcm-exact: branch and bound (60 s budget)
-  clique::AcoSearchSettings aco;  ///< pcm-aco: variant, ants, termination (backend: below)
+  clique::AcoSearchSettings aco;  ///< pcm-aco: variant, ants, termination; its backend and
+                                  ///< threads are those below (others are refused)
   CeresSettings ceres;            ///< every Ceres solve
   aco::BackendKind backend = aco::BackendKind::automatic;  ///< consistency pairs and ants
   std::size_t threads = 1;                                 ///< their threads; 0 = all cores
