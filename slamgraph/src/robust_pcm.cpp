@@ -243,34 +243,27 @@ void run_pcm(const PoseGraph& stated, const std::vector<Pose2>& initial, double 
   // At the noise the graph shows (shown_noise.hpp) the tests are sharp, and a true closure must
   // pass all its m - 1 pairwise tests and the check: each at the family-wise confidence
   // (pairwise_confidence); that noise also says where a cycle's heading leaves the linear regime
-  // (consistency.hpp).
-  if (settings.shown_noise) {
-    auto start = std::chrono::steady_clock::now();
+  // (consistency.hpp). By default (widen_noise) only an axis the graph states narrower than its
+  // short cycles show (by more than kWidenAbove) is decided at the noise they show, each test at
+  // the inlier confidence; an axis stated wider is left to the recalibrated check.
+  std::optional<PoseGraph> rescaled;
+  if (settings.shown_noise || (settings.widen_noise && m > 0)) {
+    const auto start = std::chrono::steady_clock::now();
     result.shown_noise = estimate_shown_noise(stated, result.split);
-    tests.confidence = pairwise_confidence(settings.inlier_confidence, m);
-    tests.linear_heading_sd = kLinearHeadingSd;
-    c2 = chi_square3_quantile(tests.confidence);
-    const PoseGraph graph = at_noise_scale(stated, result.shown_noise->scale);
-    result.consistency_s += seconds_since(start);
-    select_closures(graph, initial, c2, tests, settings, result);
-    return;
-  }
-  // An axis the graph states narrower than its short cycles show (by more than kWidenAbove) is
-  // decided at the noise they show; an axis stated wider is left to the recalibrated check.
-  std::optional<PoseGraph> widened;
-  if (settings.widen_noise && m > 0) {
-    auto start = std::chrono::steady_clock::now();
-    result.shown_noise = estimate_shown_noise(stated, result.split);
-    const auto wider = [](double shown) { return shown > kWidenAbove ? shown : 1.0; };
-    const NoiseScale scale{wider(result.shown_noise->scale.xy),
-                           wider(result.shown_noise->scale.theta)};
-    if (scale.xy > 1.0 || scale.theta > 1.0) {
-      widened = at_noise_scale(stated, scale);
-      result.widened = scale;
+    NoiseScale scale = result.shown_noise->scale;
+    if (settings.shown_noise) {
+      tests.confidence = pairwise_confidence(settings.inlier_confidence, m);
+      tests.linear_heading_sd = kLinearHeadingSd;
+      c2 = chi_square3_quantile(tests.confidence);
+    } else {
+      const auto wider = [](double shown) { return shown > kWidenAbove ? shown : 1.0; };
+      scale = {wider(scale.xy), wider(scale.theta)};
+      if (scale.xy > 1.0 || scale.theta > 1.0) result.widened = scale;
     }
+    if (settings.shown_noise || result.widened) rescaled = at_noise_scale(stated, scale);
     result.consistency_s += seconds_since(start);
   }
-  select_closures(widened ? *widened : stated, initial, c2, tests, settings, result);
+  select_closures(rescaled ? *rescaled : stated, initial, c2, tests, settings, result);
 }
 
 }  // namespace antslam::slam::detail
